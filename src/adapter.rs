@@ -1,0 +1,713 @@
+//! The adapter: [`RapierLayout`], which keeps one [`RapierSceneWorld`] alive across
+//! frames and syncs the host's scene into it and the motion out of it.
+//!
+//! Each call runs four passes:
+//! 1. **Topology**: match scene nodes to bodies; when nodes, edges or pins changed,
+//!    patch the world (or rebuild it, by configuration).
+//! 2. **Sync in**: body kinds follow pins, drags and unusable input, flipped in place;
+//!    pinned and dragged bodies are driven to the host's positions; free bodies the host
+//!    moved are put where the host put them.
+//! 3. **Simulate**: the frame time in equal substeps.
+//! 4. **Sync out**: each free node's displacement during this call.
+
+use std::hash::Hash;
+
+use euclid::default::{Point2D, Vector2D};
+use rapier2d::prelude::{RigidBodyType, Vector};
+use serde::{Deserialize, Serialize};
+
+use crate::bindings::{ColliderSpec, NodeAvatarBinding, SceneBodyKind};
+use crate::config::{BodyKindPolicy, RapierLayoutConfig, TopologyUpdate};
+use crate::events::SceneEvent;
+use crate::layout::{DeltaMap, IdHasher, Layout, LayoutExtras};
+use crate::scene::{CanvasNode, CanvasSceneInput, CanvasViewport};
+use crate::timestep::StepPlan;
+use crate::topology::Topology;
+use crate::validation::{node_is_valid, validate, LayoutError};
+use crate::world::{finite_or, RapierSceneWorld, WorldOptions};
+
+/// How long (simulated seconds) every dynamic body must stay under
+/// [`RapierLayoutConfig::rest_speed`] before [`Layout::is_converged`] says so; the same
+/// time rapier waits before putting a body to sleep.
+pub const REST_TIME: f32 = 0.5;
+
+/// State the host keeps for a [`RapierLayout`] between frames.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct RapierLayoutState {
+    /// Number of `step` calls made with this state.
+    pub step_count: u64,
+    /// The fixed physics timestep in seconds; `0.0` (or any unusable value) means 1/60.
+    pub dt: f32,
+    /// Gravity along x, in world units per second². Default: `0.0`.
+    pub gravity_x: f32,
+    /// Gravity along y, in world units per second² (canvas y grows downwards).
+    /// Default: `0.0`.
+    pub gravity_y: f32,
+    /// Simulated time so far, in seconds.
+    pub simulated_time: f64,
+}
+
+/// Where a scene node stands this call, found in the topology pass.
+#[derive(Clone, Copy, Debug)]
+struct NodeMatch {
+    /// Its body's slot, or `NO_SLOT` (no body, or a repeated id).
+    slot: u32,
+    valid: bool,
+    pinned: bool,
+}
+
+const NO_SLOT: u32 = u32::MAX;
+
+/// A kinematic body moving to the host's position over this call's substeps.
+#[derive(Clone, Copy, Debug)]
+struct Drive {
+    slot: u32,
+    from: Point2D<f32>,
+    to: Point2D<f32>,
+}
+
+/// A graph layout on a persistent Rapier2D world.
+///
+/// Nodes are disks (rotations locked), edges are joints ([`EdgeJoint`](crate::EdgeJoint)),
+/// and the world lives from call to call, so momentum carries across frames: a thrown
+/// node keeps flying, a pinned node holds, and a topology edit patches the world without
+/// stopping everybody else.
+///
+/// # Example
+/// ```
+/// use graph_canvas_layout::{
+///     euclid::default::Point2D, CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport,
+///     Layout, LayoutExtras, RapierLayout, RapierLayoutState,
+/// };
+/// let mut scene = CanvasSceneInput::new(
+///     vec![CanvasNode::new(1_u32, Point2D::new(0.0, 0.0)), CanvasNode::new(2, Point2D::new(300.0, 0.0))],
+///     vec![CanvasEdge::new(1, 2)],
+/// );
+/// let mut layout = RapierLayout::default();
+/// let mut state = RapierLayoutState::default();
+/// for _ in 0..120 {
+///     let deltas = layout.step(&scene, &mut state, 1.0 / 60.0, &CanvasViewport::default(), &LayoutExtras::default());
+///     for node in &mut scene.nodes {
+///         if let Some(d) = deltas.get(&node.id) {
+///             node.position += *d;
+///         }
+///     }
+/// }
+/// let gap = scene.nodes[1].position.x - scene.nodes[0].position.x;
+/// assert!(gap < 300.0, "the spring (rest 100) pulled the pair together: gap {gap}");
+/// ```
+pub struct RapierLayout<N> {
+    /// The configuration; changes take effect on the next call (material, shape and
+    /// collision changes rebuild the world, joint changes replace the joints).
+    pub config: RapierLayoutConfig,
+    world: Option<RapierSceneWorld<N>>,
+    topology_hash: u64,
+    rebuilds: u64,
+    patches: u64,
+    /// Incremented per matching pass; marks which bodies the scene named.
+    stamp: u64,
+    /// The configuration the world was built with.
+    applied: Option<RapierLayoutConfig>,
+    /// The edges of the scene the topology was last computed from, to skip that work
+    /// while the host passes the same edges.
+    cached_edges: Vec<(N, N)>,
+    matches: Vec<NodeMatch>,
+    drives: Vec<Drive>,
+    calm_time: f32,
+    converged: bool,
+}
+
+impl<N> std::fmt::Debug for RapierLayout<N> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("RapierLayout")
+            .field("config", &self.config)
+            .field("world", &self.world)
+            .field("topology_hash", &self.topology_hash)
+            .field("rebuilds", &self.rebuilds)
+            .field("patches", &self.patches)
+            .field("converged", &self.converged)
+            .finish_non_exhaustive()
+    }
+}
+
+impl<N: Clone + Eq + Hash> Default for RapierLayout<N> {
+    fn default() -> Self {
+        Self::new(RapierLayoutConfig::default())
+    }
+}
+
+// ── public API ────────────────────────────────────────────────────────────────────────
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    /// A layout with `config` and no world yet (it is built on the first non-empty step).
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{RapierLayout, RapierLayoutConfig};
+    /// let layout = RapierLayout::<u32>::new(RapierLayoutConfig { default_radius: 10.0, ..Default::default() });
+    /// assert!(!layout.has_world());
+    /// ```
+    pub fn new(config: RapierLayoutConfig) -> Self {
+        Self {
+            config,
+            world: None,
+            topology_hash: 0,
+            rebuilds: 0,
+            patches: 0,
+            stamp: 0,
+            applied: None,
+            cached_edges: Vec::new(),
+            matches: Vec::new(),
+            drives: Vec::new(),
+            calm_time: 0.0,
+            converged: false,
+        }
+    }
+
+    /// Whether a persistent world exists.
+    pub fn has_world(&self) -> bool {
+        self.world.is_some()
+    }
+
+    /// The hash of the topology (node ids, undirected edges, pins) the world models; 0
+    /// before the first build and after an empty scene. Independent of input order.
+    pub fn current_topology_hash(&self) -> u64 {
+        self.topology_hash
+    }
+
+    /// The persistent world, if any.
+    pub fn world(&self) -> Option<&RapierSceneWorld<N>> {
+        self.world.as_ref()
+    }
+
+    /// How many times a world was built from scratch.
+    pub fn rebuild_count(&self) -> u64 {
+        self.rebuilds
+    }
+
+    /// How many topology changes were applied to the existing world in place.
+    pub fn patch_count(&self) -> u64 {
+        self.patches
+    }
+
+    /// Drains the contact events recorded since the last call (empty unless
+    /// [`RapierLayoutConfig::contact_events`] is on).
+    pub fn drain_events(&mut self) -> Vec<SceneEvent<N>> {
+        self.world
+            .as_mut()
+            .map(RapierSceneWorld::read_events)
+            .unwrap_or_default()
+    }
+
+    /// `step` with validation: bad input is rejected with an error that names the node
+    /// or edge, and the call changes nothing.
+    ///
+    /// # Errors
+    /// [`LayoutError`] for a non-finite position, a NaN, infinite or negative radius, a
+    /// repeated node id, or an edge naming a node that is not in the scene.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasEdge, CanvasNode, CanvasSceneInput,
+    ///     CanvasViewport, LayoutError, LayoutExtras, RapierLayout, RapierLayoutState};
+    /// let scene = CanvasSceneInput::new(vec![CanvasNode::new(1_u32, Point2D::origin())], vec![CanvasEdge::new(1, 9)]);
+    /// let mut layout = RapierLayout::default();
+    /// let mut state = RapierLayoutState::default();
+    /// let err = layout.try_step(&scene, &mut state, 1.0 / 60.0, &CanvasViewport::default(), &LayoutExtras::default());
+    /// assert!(matches!(err, Err(LayoutError::UnknownEdgeEndpoint { missing: 9, .. })));
+    /// assert_eq!(state.step_count, 0);
+    /// assert!(!layout.has_world());
+    /// ```
+    pub fn try_step(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        state: &mut RapierLayoutState,
+        dt: f32,
+        _viewport: &CanvasViewport,
+        extras: &LayoutExtras<N>,
+    ) -> Result<DeltaMap<N>, LayoutError<N>> {
+        validate(scene)?;
+        Ok(self.advance(scene, state, dt, extras))
+    }
+}
+
+impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
+    type State = RapierLayoutState;
+
+    /// Advances the layout by `dt` seconds and returns each free node's displacement.
+    ///
+    /// Never panics on bad input: a node with a non-finite position or an invalid
+    /// radius is left out for this call (a node that already has a body stays where it
+    /// is, with no delta, until the host gives it usable values), repeated ids after the
+    /// first are ignored, and edges naming missing nodes are dropped.
+    fn step(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        state: &mut RapierLayoutState,
+        dt: f32,
+        _viewport: &CanvasViewport,
+        extras: &LayoutExtras<N>,
+    ) -> DeltaMap<N> {
+        self.advance(scene, state, dt, extras)
+    }
+
+    /// True when the layout is at rest: a world exists, no dynamic body moved faster
+    /// than [`RapierLayoutConfig::rest_speed`] for [`REST_TIME`] seconds of simulated
+    /// time, and nothing (a drag, a release, a host move, a topology change) disturbed
+    /// it meanwhile.
+    fn is_converged(&self, _state: &RapierLayoutState) -> bool {
+        self.world.is_some() && self.converged
+    }
+}
+
+// ── the four passes ───────────────────────────────────────────────────────────────────
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    fn advance(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        state: &mut RapierLayoutState,
+        dt: f32,
+        extras: &LayoutExtras<N>,
+    ) -> DeltaMap<N> {
+        state.step_count += 1;
+        if scene.nodes.is_empty() {
+            self.drop_world();
+            return DeltaMap::default();
+        }
+        let plan = StepPlan::new(
+            dt,
+            state.dt,
+            self.config.max_frame_time,
+            self.config.max_substeps,
+        );
+        self.apply_config_changes();
+        let mut disturbed = self.sync_topology(scene, extras);
+        disturbed |= self.sync_in(scene, extras, plan.frame_dt);
+        let gravity = Vector2D::new(finite_or(state.gravity_x, 0.0), finite_or(state.gravity_y, 0.0));
+        self.simulate(&plan, gravity);
+        state.simulated_time += f64::from(plan.simulated());
+        let (deltas, max_speed) = self.sync_out(scene);
+        self.track_rest(disturbed || !self.drives.is_empty(), max_speed, plan.simulated());
+        deltas
+    }
+
+    fn drop_world(&mut self) {
+        self.world = None;
+        self.topology_hash = 0;
+        self.applied = None;
+        self.cached_edges.clear();
+        self.converged = false;
+        self.calm_time = 0.0;
+    }
+
+    /// Config changes that the world's structure depends on drop it (rebuilt this call);
+    /// a joint change replaces the joints in place.
+    fn apply_config_changes(&mut self) {
+        let Some(applied) = &self.applied else {
+            return;
+        };
+        if *applied == self.config {
+            return;
+        }
+        let structural = applied.material != self.config.material
+            || applied.collisions != self.config.collisions
+            || applied.contact_events != self.config.contact_events
+            || applied.default_radius.to_bits() != self.config.default_radius.to_bits();
+        if structural {
+            self.world = None;
+            self.topology_hash = 0;
+        } else if applied.edge_joint != self.config.edge_joint {
+            if let Some(world) = self.world.as_mut() {
+                world.clear_edge_joints();
+            }
+            // Forces the topology pass to re-insert every joint.
+            self.topology_hash = 0;
+            self.cached_edges.clear();
+        }
+        self.applied = Some(self.config.clone());
+    }
+
+    fn radius_of(&self, node: &CanvasNode<N>) -> f32 {
+        if node.radius > 0.0 {
+            node.radius
+        } else {
+            self.config.default_radius
+        }
+    }
+
+    fn binding_for(&self, node: &CanvasNode<N>) -> NodeAvatarBinding<N> {
+        NodeAvatarBinding {
+            node_id: node.id.clone(),
+            collider: ColliderSpec::Circle {
+                radius: self.radius_of(node),
+            },
+            material: self.config.material,
+            body_kind: SceneBodyKind::Dynamic,
+        }
+    }
+
+    /// Matches scene nodes to bodies (`self.matches`) and returns whether anything told
+    /// apart the scene's topology from the world's.
+    fn match_nodes(&mut self, scene: &CanvasSceneInput<N>, extras: &LayoutExtras<N>) -> bool {
+        self.stamp += 1;
+        let stamp = self.stamp;
+        self.matches.clear();
+        let Some(world) = self.world.as_mut() else {
+            return true;
+        };
+        let check_pins = !extras.pinned.is_empty();
+        let mut changed = false;
+        let mut seen = 0;
+        for node in &scene.nodes {
+            let valid = node_is_valid(node);
+            let pinned = check_pins && extras.pinned.contains(&node.id);
+            let slot = match world.slot_of(&node.id) {
+                Some(s) if world.slots[s].stamp != stamp => {
+                    let slot = &mut world.slots[s];
+                    slot.stamp = stamp;
+                    seen += 1;
+                    changed |= slot.pinned != pinned;
+                    s as u32
+                }
+                Some(_) => NO_SLOT, // a repeated id
+                None => {
+                    // A usable node without a body is new (or a repeat of a new id).
+                    changed |= valid;
+                    NO_SLOT
+                }
+            };
+            self.matches.push(NodeMatch {
+                slot,
+                valid,
+                pinned,
+            });
+        }
+        changed || seen != world.slots.len()
+    }
+
+    fn edges_match_cache(&self, scene: &CanvasSceneInput<N>) -> bool {
+        self.cached_edges.len() == scene.edges.len()
+            && self
+                .cached_edges
+                .iter()
+                .zip(&scene.edges)
+                .all(|((s, t), e)| *s == e.source && *t == e.target)
+    }
+
+    /// Pass 1. Returns whether the world's structure changed.
+    fn sync_topology(&mut self, scene: &CanvasSceneInput<N>, extras: &LayoutExtras<N>) -> bool {
+        let nodes_changed = self.match_nodes(scene, extras);
+        if !nodes_changed && self.topology_hash != 0 && self.edges_match_cache(scene) {
+            return false;
+        }
+        let topology = {
+            let world = self.world.as_ref();
+            Topology::of(scene, extras, |id| world.is_some_and(|w| w.contains_node(id)))
+        };
+        self.cached_edges.clear();
+        self.cached_edges.extend(
+            scene
+                .edges
+                .iter()
+                .map(|e| (e.source.clone(), e.target.clone())),
+        );
+        if self.world.is_some() && topology.hash == self.topology_hash {
+            return false;
+        }
+        let rebuild = self.world.is_none()
+            || self.config.topology_update == TopologyUpdate::Rebuild;
+        if rebuild {
+            self.build_world(scene, &topology);
+        } else {
+            self.patch_world(scene, &topology);
+        }
+        self.topology_hash = topology.hash;
+        if let Some(world) = self.world.as_mut() {
+            world.set_topology_hash(topology.hash);
+        }
+        self.match_nodes(scene, extras);
+        true
+    }
+
+    fn world_options(&self) -> WorldOptions {
+        WorldOptions {
+            collisions: self.config.collisions,
+            contact_events: self.config.contact_events,
+        }
+    }
+
+    fn build_world(&mut self, scene: &CanvasSceneInput<N>, topology: &Topology) {
+        let mut world = RapierSceneWorld::with_options(self.world_options());
+        for &i in &topology.nodes {
+            let node = &scene.nodes[i];
+            world.insert_node(&self.binding_for(node), node.position);
+        }
+        for &(a, b) in &topology.edges {
+            world.insert_edge_joint(
+                &scene.nodes[a].id,
+                &scene.nodes[b].id,
+                &self.config.edge_joint,
+            );
+        }
+        self.world = Some(world);
+        self.applied = Some(self.config.clone());
+        self.rebuilds += 1;
+    }
+
+    /// Inserts and removes only what changed; untouched bodies keep their motion.
+    fn patch_world(&mut self, scene: &CanvasSceneInput<N>, topology: &Topology) {
+        let bindings: Vec<NodeAvatarBinding<N>> = topology
+            .nodes
+            .iter()
+            .map(|&i| self.binding_for(&scene.nodes[i]))
+            .collect();
+        let edge_joint = self.config.edge_joint;
+        let Some(world) = self.world.as_mut() else {
+            return;
+        };
+        // Removals, in the world's own (deterministic) slot order.
+        let mut keep: std::collections::HashSet<&N, IdHasher> =
+            std::collections::HashSet::with_capacity_and_hasher(
+                topology.nodes.len(),
+                IdHasher::default(),
+            );
+        keep.extend(topology.nodes.iter().map(|&i| &scene.nodes[i].id));
+        let gone: Vec<N> = world
+            .node_ids()
+            .filter(|id| !keep.contains(id))
+            .cloned()
+            .collect();
+        for id in &gone {
+            world.remove_node(id);
+        }
+        // Insertions, in scene order.
+        for (binding, &i) in bindings.iter().zip(&topology.nodes) {
+            if !world.contains_node(&binding.node_id) {
+                world.insert_node(binding, scene.nodes[i].position);
+            }
+        }
+        // Joints: drop those whose edge went away, add the new ones.
+        let index_of: std::collections::HashMap<&N, usize, IdHasher> = topology
+            .nodes
+            .iter()
+            .map(|&i| (&scene.nodes[i].id, i))
+            .collect();
+        let wanted: std::collections::HashSet<(usize, usize), IdHasher> = topology
+            .edges
+            .iter()
+            .map(|&(a, b)| (a.min(b), a.max(b)))
+            .collect();
+        world.retain_edge_joints(|a, b| match (index_of.get(a), index_of.get(b)) {
+            (Some(&x), Some(&y)) => wanted.contains(&(x.min(y), x.max(y))),
+            _ => false,
+        });
+        for &(a, b) in &topology.edges {
+            world.insert_edge_joint(&scene.nodes[a].id, &scene.nodes[b].id, &edge_joint);
+        }
+        self.patches += 1;
+    }
+
+    /// The body type a node should have this call.
+    fn desired_type(&self, valid: bool, pinned: bool, dragging: bool) -> Option<RigidBodyType> {
+        if !valid {
+            return None; // frozen where it is
+        }
+        let policy = self.config.body_kind_policy;
+        Some(if pinned && policy == BodyKindPolicy::PinnedStatic {
+            RigidBodyType::Fixed
+        } else if pinned || dragging || policy == BodyKindPolicy::AllKinematic {
+            RigidBodyType::KinematicPositionBased
+        } else {
+            RigidBodyType::Dynamic
+        })
+    }
+
+    /// Pass 2. Returns whether the host disturbed the layout (drag, release, host move,
+    /// pin change).
+    fn sync_in(&mut self, scene: &CanvasSceneInput<N>, extras: &LayoutExtras<N>, frame_dt: f32) -> bool {
+        self.drives.clear();
+        let check_drags = !extras.dragging.is_empty();
+        let mut disturbed = false;
+        for (i, node) in scene.nodes.iter().enumerate() {
+            let m = self.matches[i];
+            if m.slot == NO_SLOT {
+                continue;
+            }
+            let s = m.slot as usize;
+            let dragging = m.valid && check_drags && extras.dragging.contains(&node.id);
+            let desired = self.desired_type(m.valid, m.pinned, dragging);
+            let radius = self.radius_of(node);
+            let density = self.config.material.density;
+            let Some(world) = self.world.as_mut() else {
+                return disturbed;
+            };
+            if m.valid {
+                if let ColliderSpec::Circle { radius: r } = world.slots[s].shape {
+                    if r.to_bits() != radius.to_bits() {
+                        world.set_shape_at(s, ColliderSpec::Circle { radius }, density);
+                    }
+                }
+            }
+            let was_dragging = world.slots[s].dragging;
+            let host = node.position;
+            let body_pos = world.position_at(s);
+            let body = world.body_at_mut(s);
+            let current = body.body_type();
+            match desired {
+                None => {
+                    // Unusable input: hold the body still where it is.
+                    if current == RigidBodyType::Dynamic {
+                        body.set_body_type(RigidBodyType::KinematicPositionBased, true);
+                    }
+                    body.set_linvel(Vector::ZERO, false);
+                    let slot = &mut world.slots[s];
+                    slot.frozen = true;
+                    slot.dragging = false;
+                    slot.initial = body_pos;
+                    continue;
+                }
+                Some(RigidBodyType::Dynamic) => {
+                    if current != RigidBodyType::Dynamic {
+                        // Release, unpin or unfreeze: in place, at the host's position,
+                        // with the drag's velocity when it was thrown.
+                        let velocity = if was_dragging && !m.pinned {
+                            world.slots[s].drag_velocity
+                        } else {
+                            Vector2D::zero()
+                        };
+                        let body = world.body_at_mut(s);
+                        body.set_body_type(RigidBodyType::Dynamic, true);
+                        if body_pos != host {
+                            body.set_translation(Vector::new(host.x, host.y), true);
+                        }
+                        body.set_linvel(Vector::new(velocity.x, velocity.y), true);
+                        disturbed = true;
+                    } else if moved_by_host(body_pos, host) {
+                        body.set_translation(Vector::new(host.x, host.y), true);
+                        body.set_linvel(Vector::ZERO, true);
+                        disturbed = true;
+                    }
+                }
+                Some(kind) => {
+                    if current != kind {
+                        body.set_body_type(kind, true);
+                        body.set_linvel(Vector::ZERO, true);
+                        disturbed = true;
+                    }
+                    if body_pos != host {
+                        if kind == RigidBodyType::Fixed {
+                            body.set_translation(Vector::new(host.x, host.y), true);
+                        } else {
+                            self.drives.push(Drive {
+                                slot: s as u32,
+                                from: body_pos,
+                                to: host,
+                            });
+                        }
+                        disturbed = true;
+                    }
+                }
+            }
+            let slot = &mut world.slots[s];
+            slot.frozen = false;
+            slot.pinned = m.pinned;
+            slot.initial = host;
+            if dragging {
+                slot.drag_velocity = if was_dragging {
+                    (host - slot.drag_position) / frame_dt
+                } else {
+                    Vector2D::zero()
+                };
+                slot.drag_position = host;
+                disturbed = true;
+            }
+            slot.dragging = dragging;
+        }
+        disturbed
+    }
+
+    /// Pass 3.
+    fn simulate(&mut self, plan: &StepPlan, gravity: Vector2D<f32>) {
+        let config = &self.config;
+        let Some(world) = self.world.as_mut() else {
+            return;
+        };
+        let length_unit = if config.length_unit.is_finite() && config.length_unit > 0.0 {
+            config.length_unit
+        } else {
+            1.0
+        };
+        let params = world.integration_parameters_mut();
+        params.dt = plan.substep_dt;
+        params.length_unit = length_unit;
+        params.normalized_max_linear_velocity = if config.max_speed > 0.0 {
+            config.max_speed / length_unit
+        } else {
+            f32::MAX
+        };
+        params.num_solver_iterations = config.solver_iterations.max(1);
+        for k in 0..plan.substeps {
+            if !self.drives.is_empty() {
+                let t = (k + 1) as f32 / plan.substeps as f32;
+                for drive in &self.drives {
+                    let target = if k + 1 == plan.substeps {
+                        drive.to
+                    } else {
+                        drive.from.lerp(drive.to, t)
+                    };
+                    world
+                        .body_at_mut(drive.slot as usize)
+                        .set_next_kinematic_translation(Vector::new(target.x, target.y));
+                }
+            }
+            world.step(gravity);
+        }
+    }
+
+    /// Pass 4. Returns the deltas and the fastest dynamic body's speed.
+    fn sync_out(&mut self, scene: &CanvasSceneInput<N>) -> (DeltaMap<N>, f32) {
+        let epsilon = self.config.delta_epsilon.max(0.0);
+        let epsilon_sq = epsilon * epsilon;
+        let mut deltas = DeltaMap::with_capacity_and_hasher(scene.nodes.len(), IdHasher::default());
+        let mut max_speed_sq: f32 = 0.0;
+        let Some(world) = self.world.as_ref() else {
+            return (deltas, 0.0);
+        };
+        for (node, m) in scene.nodes.iter().zip(&self.matches) {
+            if m.slot == NO_SLOT {
+                continue;
+            }
+            let s = m.slot as usize;
+            let body = world.body_at(s);
+            if !body.is_dynamic() {
+                continue;
+            }
+            if !body.is_sleeping() {
+                max_speed_sq = max_speed_sq.max(body.linvel().length_squared());
+            }
+            let t = body.translation();
+            let delta = Point2D::new(t.x, t.y) - world.slots[s].initial;
+            if delta.square_length() > epsilon_sq && delta.is_finite() {
+                deltas.insert(node.id.clone(), delta);
+            }
+        }
+        (deltas, max_speed_sq.sqrt())
+    }
+
+    fn track_rest(&mut self, disturbed: bool, max_speed: f32, simulated: f32) {
+        if disturbed || !(max_speed <= self.config.rest_speed) {
+            self.calm_time = 0.0;
+        } else {
+            self.calm_time += simulated;
+        }
+        self.converged = self.calm_time >= REST_TIME;
+    }
+}
+
+/// Whether the host moved a free node: its position differs from its body's by more
+/// than float noise at that magnitude (deltas below the report threshold included).
+fn moved_by_host(body: Point2D<f32>, host: Point2D<f32>) -> bool {
+    let magnitude = body.x.abs().max(body.y.abs()).max(host.x.abs()).max(host.y.abs());
+    let tolerance = 0.01_f32.max(magnitude * 8.0 * f32::EPSILON);
+    (body - host).square_length() > tolerance * tolerance
+}

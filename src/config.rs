@@ -1,0 +1,167 @@
+//! Configuration of the Rapier layout: joints, body kinds, materials, time stepping and
+//! what the world models.
+
+use serde::{Deserialize, Serialize};
+
+use crate::bindings::{EdgeJointSpec, PhysicsMaterial};
+
+/// What each edge becomes in the physics world.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub enum EdgeJoint {
+    /// A spring that pulls toward `rest_length` from both sides: stretched, it pulls
+    /// the ends together; compressed, it pushes them apart.
+    ///
+    /// `stiffness` is force per unit of stretch and `damping` force per unit of
+    /// relative speed, with mass from density × disk area. The spring is solved
+    /// implicitly, so very stiff springs stay stable; they just behave like rods.
+    Spring {
+        /// Length at which the spring exerts no force.
+        rest_length: f32,
+        /// Force per unit of stretch.
+        stiffness: f32,
+        /// Force per unit of relative speed along the edge.
+        damping: f32,
+    },
+    /// A rope: no force at all while the ends are closer than `max_length`; past it, a
+    /// limit resists further stretching with `stiffness` (force per unit of stretch,
+    /// critically damped, so the stretch is dissipated, not bounced). A very large
+    /// stiffness makes it inextensible.
+    Rope {
+        /// Length at which the rope becomes taut.
+        max_length: f32,
+        /// Force per unit of stretch past `max_length`.
+        stiffness: f32,
+    },
+    /// A rod: holds the ends at `length` both ways (a stiff, critically damped
+    /// constraint).
+    Distance {
+        /// The held distance.
+        length: f32,
+    },
+    /// No joint at all: the edge is topology only (it still counts in the topology
+    /// hash), and the world models nothing for it.
+    None,
+}
+
+impl Default for EdgeJoint {
+    /// `Spring { rest_length: 100, stiffness: 50, damping: 1 }`.
+    fn default() -> Self {
+        EdgeJoint::Spring {
+            rest_length: 100.0,
+            stiffness: 50.0,
+            damping: 1.0,
+        }
+    }
+}
+
+impl From<EdgeJointSpec> for EdgeJoint {
+    fn from(spec: EdgeJointSpec) -> Self {
+        EdgeJoint::Spring {
+            rest_length: spec.rest_length,
+            stiffness: spec.stiffness,
+            damping: spec.damping,
+        }
+    }
+}
+
+/// Which body kind pinned (and all) nodes get. Dragged nodes are always driven
+/// kinematically to the host's position, except pinned nodes under
+/// [`PinnedStatic`](BodyKindPolicy::PinnedStatic), which stay anchors while the host
+/// moves them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum BodyKindPolicy {
+    /// Pinned nodes are static bodies: anchors that other bodies rest against and that
+    /// joints pull on without moving them. Free nodes are dynamic.
+    #[default]
+    PinnedStatic,
+    /// Pinned nodes are kinematic bodies that follow the host's position and push what
+    /// they meet with the speed of that motion. Free nodes are dynamic.
+    PinnedKinematic,
+    /// Every node is kinematic: the layout only follows the host (no physics motion,
+    /// no deltas). Useful to keep a world for contact queries without simulating.
+    AllKinematic,
+}
+
+/// What to do when the topology hash changes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum TopologyUpdate {
+    /// Insert and remove only the bodies and joints that changed; untouched bodies keep
+    /// their position and velocity. Costs the change plus an O(n + e) diff.
+    #[default]
+    Incremental,
+    /// Build the whole world again from the host's positions (all motion is lost).
+    /// The plan's original behaviour; costs O(n + e) body and joint constructions.
+    Rebuild,
+}
+
+/// Configuration of [`RapierLayout`](crate::RapierLayout). Every field has a default;
+/// build one with `RapierLayoutConfig { field: value, ..Default::default() }`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct RapierLayoutConfig {
+    /// Radius given to nodes whose `radius` is `0.0`, in world units. Default: `16.0`.
+    pub default_radius: f32,
+    /// What each edge becomes. Default: [`EdgeJoint::default`].
+    pub edge_joint: EdgeJoint,
+    /// Body kinds for pinned and free nodes. Default: [`BodyKindPolicy::PinnedStatic`].
+    pub body_kind_policy: BodyKindPolicy,
+    /// Material of every node. Default: [`PhysicsMaterial::default`].
+    pub material: PhysicsMaterial,
+    /// Longest frame time simulated in one call, in seconds; time beyond it is dropped
+    /// (after a stall the layout resumes instead of fast-forwarding). Default: `0.25`.
+    pub max_frame_time: f32,
+    /// Most substeps one call runs. With the default 1/60 s timestep, 16 substeps cover
+    /// the default `max_frame_time`. Lower it to bound the worst-case cost of a call;
+    /// simulated time beyond `max_substeps × timestep` is dropped. Default: `16`.
+    pub max_substeps: u32,
+    /// Rapier's `length_unit`: the size of a typical object in world units. Rapier scales
+    /// its tolerances (contact slop, sleep threshold, speed cap) by it. Canvas nodes are
+    /// about 30 pixels across and edges about 100, so the default suits pixel worlds.
+    /// Default: `100.0`.
+    pub length_unit: f32,
+    /// Speed cap in world units per second; rapier clamps faster bodies each substep.
+    /// A throw faster than this flies at the cap. Default: `40_000.0` (rapier's own
+    /// 400 lengths/s at `length_unit` 100).
+    pub max_speed: f32,
+    /// Whether nodes collide. Off, the world holds no colliders at all (bodies get their
+    /// mass directly), which saves the broad and narrow phases. Default: `true`.
+    pub collisions: bool,
+    /// Whether the world records contact begin/end events for
+    /// [`RapierLayout::drain_events`](crate::RapierLayout::drain_events). Off, no event
+    /// is produced or stored. Default: `false`.
+    pub contact_events: bool,
+    /// What a topology change does. Default: [`TopologyUpdate::Incremental`].
+    pub topology_update: TopologyUpdate,
+    /// Solver iterations per substep: more iterations solve joints and contacts more
+    /// exactly at a proportional cost. Default: `4` (rapier's default).
+    pub solver_iterations: usize,
+    /// Speed, in world units per second, under which a body counts as at rest: rapier
+    /// puts bodies slower than this for 0.5 s to sleep, and
+    /// [`Layout::is_converged`](crate::Layout::is_converged) reports rest when no
+    /// dynamic body is faster. Default: `5.0`.
+    pub rest_speed: f32,
+    /// Displacements shorter than this (world units) are left out of the returned map;
+    /// they stay owed to the host and are reported once they add up. Default: `1e-4`.
+    pub delta_epsilon: f32,
+}
+
+impl Default for RapierLayoutConfig {
+    fn default() -> Self {
+        Self {
+            default_radius: 16.0,
+            edge_joint: EdgeJoint::default(),
+            body_kind_policy: BodyKindPolicy::PinnedStatic,
+            material: PhysicsMaterial::default(),
+            max_frame_time: 0.25,
+            max_substeps: 16,
+            length_unit: 100.0,
+            max_speed: 40_000.0,
+            collisions: true,
+            contact_events: false,
+            topology_update: TopologyUpdate::Incremental,
+            solver_iterations: 4,
+            rest_speed: 5.0,
+            delta_epsilon: 1e-4,
+        }
+    }
+}

@@ -1,0 +1,70 @@
+//! The layout trait and the per-frame extras a host passes with the scene.
+
+use std::collections::{HashMap, HashSet};
+
+use euclid::default::Vector2D;
+use serde::{de::DeserializeOwned, Serialize};
+
+use crate::scene::{CanvasSceneInput, CanvasViewport};
+
+/// The hasher behind [`DeltaMap`] and [`NodeSet`]: ahash, seeded per map.
+pub type IdHasher = ahash::RandomState;
+
+/// What [`Layout::step`] returns: per node, the displacement this call produced, in
+/// world units. A node absent from the map did not move.
+pub type DeltaMap<N> = HashMap<N, Vector2D<f32>, IdHasher>;
+
+/// A set of node ids, as used in [`LayoutExtras`].
+pub type NodeSet<N> = HashSet<N, IdHasher>;
+
+/// Per-frame interaction state the host passes beside the scene.
+///
+/// # Example
+/// ```
+/// use graph_canvas_layout::LayoutExtras;
+/// let mut extras = LayoutExtras::<u32>::default();
+/// extras.pinned.insert(3);   // immovable until unpinned
+/// extras.dragging.insert(5); // under the pointer this frame
+/// ```
+#[derive(Clone, Debug)]
+pub struct LayoutExtras<N> {
+    /// Nodes the user wants immovable. The physics never moves them; the host may.
+    pub pinned: NodeSet<N>,
+    /// Nodes the user's pointer holds this frame. The host moves them; the body sits
+    /// exactly where the host puts it, and the release throws it with the drag's speed.
+    pub dragging: NodeSet<N>,
+}
+
+impl<N> Default for LayoutExtras<N> {
+    fn default() -> Self {
+        Self {
+            pinned: NodeSet::default(),
+            dragging: NodeSet::default(),
+        }
+    }
+}
+
+/// A layout a graph canvas drives once per frame.
+///
+/// The host owns the positions: it passes them in the scene, adds the returned deltas to
+/// its store and hands the new positions back on the next call.
+pub trait Layout<N> {
+    /// State the host keeps between frames and may persist.
+    type State: Default + Clone + Serialize + DeserializeOwned;
+
+    /// Advances the layout by `dt` seconds of frame time and returns, per node, the
+    /// displacement this call produced. Pinned and dragged nodes never appear in it.
+    fn step(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        state: &mut Self::State,
+        dt: f32,
+        viewport: &CanvasViewport,
+        extras: &LayoutExtras<N>,
+    ) -> DeltaMap<N>;
+
+    /// Whether the layout is at rest, so the host may stop calling `step` every frame.
+    fn is_converged(&self, _state: &Self::State) -> bool {
+        false
+    }
+}

@@ -1,0 +1,99 @@
+//! # graph-canvas-layout
+//!
+//! A graph layout for Rust graph canvases on a persistent [Rapier2D](rapier2d) world.
+//! Nodes are rigid disks, edges are joints, and the world lives from frame to frame, so
+//! a thrown node keeps flying, a pinned node holds, and a graph edit does not stop
+//! everybody else's motion. The host keeps its own positions: each call returns the
+//! displacement of every node that moved.
+//!
+//! ## Quick start
+//! ```
+//! use graph_canvas_layout::{
+//!     euclid::default::Point2D, CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport,
+//!     Layout, LayoutExtras, RapierLayout, RapierLayoutState,
+//! };
+//!
+//! // The host's graph: positions in canvas pixels.
+//! let mut scene = CanvasSceneInput::new(
+//!     vec![
+//!         CanvasNode::new("a", Point2D::new(0.0, 0.0)),
+//!         CanvasNode::new("b", Point2D::new(250.0, 0.0)),
+//!         CanvasNode::new("c", Point2D::new(0.0, 250.0)),
+//!     ],
+//!     vec![CanvasEdge::new("a", "b"), CanvasEdge::new("b", "c")],
+//! );
+//! let mut layout = RapierLayout::default();
+//! let mut state = RapierLayoutState::default();
+//! let mut extras = LayoutExtras::default();
+//! extras.pinned.insert("a"); // an anchor
+//!
+//! // One call per frame, with the frame's elapsed time.
+//! for _frame in 0..60 {
+//!     let deltas = layout.step(&scene, &mut state, 1.0 / 60.0, &CanvasViewport::default(), &extras);
+//!     for node in &mut scene.nodes {
+//!         if let Some(delta) = deltas.get(&node.id) {
+//!             node.position += *delta; // the host owns its positions
+//!         }
+//!     }
+//! }
+//! assert_eq!(scene.nodes[0].position, Point2D::new(0.0, 0.0), "the pin held");
+//! ```
+//!
+//! ## The contract in short
+//! - [`Layout::step`] returns per-node deltas of this call only; pinned and dragged
+//!   nodes never appear in it.
+//! - Pinned nodes never move by physics; dragged nodes sit exactly where the host puts
+//!   them; releasing a drag throws the node with the pointer's last speed.
+//! - A free node the host moved itself (undo, snap) is put where the host put it.
+//! - [`RapierLayout::try_step`] rejects bad input with a [`LayoutError`] and changes
+//!   nothing; [`Layout::step`] leaves bad elements out and never panics.
+//!
+//! ## Feature flags
+//! - `parallel`: rapier's multi-threaded solver (rayon).
+//! - `enhanced-determinism`: rapier's cross-platform bit-exact math.
+//!
+//! ## FAQ
+//! **Units?** World units are canvas pixels and seconds. Rapier's `length_unit` is set
+//! to 100 (a typical node-plus-edge size), which scales its contact tolerances, sleep
+//! threshold and speed cap to pixels. Mass is `density × disk area`.
+//!
+//! **Why is nothing moving?** A graph already at its rest lengths does not move; bodies
+//! asleep stay asleep until something touches them. With
+//! [`BodyKindPolicy::AllKinematic`] nothing is simulated. Check also that the host adds
+//! the deltas to its positions and passes them back.
+//!
+//! **Why does a node jump back?** It does not: the host's position is authoritative. A
+//! free node whose position differs from its body's is teleported to the host's.
+//!
+//! **How fast can a node fly?** [`RapierLayoutConfig::max_speed`] (default 40,000 units
+//! per second) caps every body; faster throws fly at the cap.
+#![deny(missing_docs)]
+
+mod adapter;
+mod bindings;
+mod config;
+mod events;
+mod joints;
+mod layout;
+mod scene;
+mod timestep;
+mod topology;
+mod validation;
+mod world;
+
+pub use euclid;
+pub use rapier2d;
+
+pub use adapter::{RapierLayout, RapierLayoutState, REST_TIME};
+pub use bindings::{
+    ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot, PhysicsMaterial, SceneBodyKind,
+};
+pub use config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, TopologyUpdate};
+pub use events::SceneEvent;
+pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeSet};
+pub use scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
+pub use timestep::{StepPlan, DEFAULT_TIMESTEP};
+pub use validation::LayoutError;
+pub use world::{
+    RapierSceneWorld, WorldOptions, MAX_PENDING_EVENTS, MIN_BODY_MASS, POSITION_EPSILON,
+};

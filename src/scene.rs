@@ -1,0 +1,127 @@
+//! Scene input: the read-only description of the graph that a host hands to a layout
+//! every frame.
+
+use euclid::default::{Point2D, Rect};
+use serde::{Deserialize, Serialize};
+
+/// One node of the host's graph, as the host sees it this frame.
+///
+/// # Example
+/// ```
+/// use graph_canvas_layout::{euclid::default::Point2D, CanvasNode};
+/// let node = CanvasNode::new(7_u32, Point2D::new(10.0, 20.0));
+/// assert_eq!(node.radius, 0.0); // 0 means "use the layout's default radius"
+/// ```
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CanvasNode<N> {
+    /// The host's identifier of the node. Needs `Clone + Eq + Hash`, never `Ord`.
+    pub id: N,
+    /// Where the host currently draws the node, in world units (canvas pixels).
+    pub position: Point2D<f32>,
+    /// Radius of the node's disk in world units; `0.0` means the layout's default radius.
+    pub radius: f32,
+    /// Optional text the host shows; layouts ignore it.
+    pub label: Option<String>,
+}
+
+impl<N> CanvasNode<N> {
+    /// A node at `position` with radius `0.0` (use the layout's default) and no label.
+    pub fn new(id: N, position: Point2D<f32>) -> Self {
+        Self {
+            id,
+            position,
+            radius: 0.0,
+            label: None,
+        }
+    }
+
+    /// The same node with an explicit radius.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasNode};
+    /// let node = CanvasNode::new("a", Point2D::origin()).with_radius(24.0);
+    /// assert_eq!(node.radius, 24.0);
+    /// ```
+    #[must_use]
+    pub fn with_radius(mut self, radius: f32) -> Self {
+        self.radius = radius;
+        self
+    }
+}
+
+/// One edge of the host's graph. Edges are undirected for the physics: `(a, b)`,
+/// `(b, a)` and repeats make one joint; self-loops are ignored.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CanvasEdge<N> {
+    /// One end of the edge.
+    pub source: N,
+    /// The other end of the edge.
+    pub target: N,
+    /// The host's weight; `1.0` by default. The Rapier layout does not read it.
+    pub weight: f32,
+}
+
+impl<N> CanvasEdge<N> {
+    /// An edge between `source` and `target` with weight `1.0`.
+    pub fn new(source: N, target: N) -> Self {
+        Self {
+            source,
+            target,
+            weight: 1.0,
+        }
+    }
+}
+
+/// Everything a layout reads about the graph this frame.
+///
+/// # Example
+/// ```
+/// use graph_canvas_layout::{euclid::default::Point2D, CanvasEdge, CanvasNode, CanvasSceneInput};
+/// let scene = CanvasSceneInput::new(
+///     vec![CanvasNode::new(0, Point2D::new(0.0, 0.0)), CanvasNode::new(1, Point2D::new(90.0, 0.0))],
+///     vec![CanvasEdge::new(0, 1)],
+/// );
+/// assert_eq!(scene.nodes.len(), 2);
+/// ```
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CanvasSceneInput<N> {
+    /// The nodes, in the host's order. The order reaches rapier (insertion order), so
+    /// keep it stable for reproducible runs; it never changes the topology hash.
+    pub nodes: Vec<CanvasNode<N>>,
+    /// The edges, in any order.
+    pub edges: Vec<CanvasEdge<N>>,
+}
+
+impl<N> CanvasSceneInput<N> {
+    /// A scene from its nodes and edges.
+    pub fn new(nodes: Vec<CanvasNode<N>>, edges: Vec<CanvasEdge<N>>) -> Self {
+        Self { nodes, edges }
+    }
+}
+
+impl<N> Default for CanvasSceneInput<N> {
+    fn default() -> Self {
+        Self::new(Vec::new(), Vec::new())
+    }
+}
+
+/// The part of the world the host shows. The Rapier layout does not read it; it is part
+/// of the [`Layout`](crate::Layout) contract for layouts that do.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CanvasViewport {
+    /// The visible rectangle, in world units.
+    pub rect: Rect<f32>,
+    /// Device pixels per world unit.
+    pub scale_factor: f32,
+}
+
+impl Default for CanvasViewport {
+    /// An 800 × 600 rectangle at the origin with scale factor 1.
+    fn default() -> Self {
+        Self {
+            rect: Rect::new(Point2D::origin(), euclid::default::Size2D::new(800.0, 600.0)),
+            scale_factor: 1.0,
+        }
+    }
+}

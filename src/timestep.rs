@@ -1,0 +1,77 @@
+//! Frame time to substeps: how one call's `dt` becomes equal rapier steps.
+
+/// The fixed timestep used when the state's is unset (`0.0`) or unusable.
+pub const DEFAULT_TIMESTEP: f32 = 1.0 / 60.0;
+
+/// How one call advances simulated time.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepPlan {
+    /// Number of rapier steps this call runs (at least 1).
+    pub substeps: u32,
+    /// Length of each of them, in seconds; never longer than the fixed timestep.
+    pub substep_dt: f32,
+    /// The frame's elapsed time used to measure drag speeds, in seconds: `dt` when it is
+    /// a positive finite number, else the fixed timestep.
+    pub frame_dt: f32,
+}
+
+impl StepPlan {
+    /// Simulated time this call advances: `substeps × substep_dt`.
+    pub fn simulated(&self) -> f32 {
+        self.substeps as f32 * self.substep_dt
+    }
+
+    /// The plan for a call with frame time `dt`, fixed timestep `fixed_dt`, at most
+    /// `max_frame_time` seconds and `max_substeps` steps per call.
+    ///
+    /// `dt > 0` (finite): `min(dt, max_frame_time)` in `ceil(time / fixed_dt)` equal
+    /// substeps, at most `max_substeps` of them (time beyond is dropped, never
+    /// integrated in one longer step). `dt` zero, negative or non-finite: one fixed step.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::StepPlan;
+    /// let plan = StepPlan::new(0.05, 1.0 / 60.0, 0.25, 16);
+    /// assert_eq!(plan.substeps, 3);
+    /// assert!((plan.substep_dt - 0.05 / 3.0).abs() < 1e-7);
+    /// let idle = StepPlan::new(f32::NAN, 1.0 / 60.0, 0.25, 16);
+    /// assert_eq!((idle.substeps, idle.substep_dt), (1, 1.0 / 60.0));
+    /// ```
+    pub fn new(dt: f32, fixed_dt: f32, max_frame_time: f32, max_substeps: u32) -> Self {
+        let fixed = if fixed_dt.is_finite() && fixed_dt > 0.0 {
+            fixed_dt
+        } else {
+            DEFAULT_TIMESTEP
+        };
+        if !(dt.is_finite() && dt > 0.0) {
+            return Self {
+                substeps: 1,
+                substep_dt: fixed,
+                frame_dt: fixed,
+            };
+        }
+        let cap = if max_frame_time.is_finite() && max_frame_time > 0.0 {
+            max_frame_time
+        } else {
+            0.25
+        };
+        let max_substeps = max_substeps.max(1);
+        let time = dt.min(cap);
+        // A hair of tolerance so 0.05 s at 1/60 s is 3 substeps, not 4.
+        let wanted = ((time / fixed) * (1.0 - 1e-5)).ceil().max(1.0);
+        if wanted > max_substeps as f32 {
+            Self {
+                substeps: max_substeps,
+                substep_dt: fixed,
+                frame_dt: dt,
+            }
+        } else {
+            let substeps = wanted as u32;
+            Self {
+                substeps,
+                substep_dt: (time / substeps as f32).min(fixed),
+                frame_dt: dt,
+            }
+        }
+    }
+}

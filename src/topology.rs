@@ -1,0 +1,99 @@
+//! The topology of a scene: which nodes and edges the world models, and the
+//! order-free hash that says whether it changed.
+
+use std::collections::{HashMap, HashSet};
+use std::hash::Hash;
+
+use crate::layout::{IdHasher, LayoutExtras};
+use crate::scene::CanvasSceneInput;
+use crate::validation::node_is_valid;
+
+/// Fixed seeds: the hash of a topology is the same in every layout of a build, so two
+/// layouts fed the same session agree on it.
+fn id_hasher() -> ahash::RandomState {
+    ahash::RandomState::with_seeds(
+        0x243f_6a88_85a3_08d3,
+        0x1319_8a2e_0370_7344,
+        0xa409_3822_299f_31d0,
+        0x082e_fa98_ec4e_6c89,
+    )
+}
+
+/// splitmix64's finalizer: spreads every input bit over the output, so sums of mixed
+/// values behave like a hash of the multiset.
+fn mix(mut x: u64) -> u64 {
+    x ^= x >> 30;
+    x = x.wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    x ^= x >> 27;
+    x = x.wrapping_mul(0x94d0_49bb_1331_11eb);
+    x ^ (x >> 31)
+}
+
+const NODE_TAG: u64 = 0x6e6f_6465;
+const EDGE_TAG: u64 = 0x6564_6765;
+const PIN_TAG: u64 = 0x7069_6e6e;
+
+/// The topology the world should model this call, in scene order.
+#[derive(Debug)]
+pub(crate) struct Topology {
+    /// Scene indices of the modelled nodes: each id's first occurrence, when its values
+    /// are usable or it already has a body.
+    pub(crate) nodes: Vec<usize>,
+    /// Unordered, de-duplicated edges between modelled nodes, as scene indices, in the
+    /// order of their first occurrence; self-loops left out.
+    pub(crate) edges: Vec<(usize, usize)>,
+    /// The order-free hash of nodes, edges and pins (never 0).
+    pub(crate) hash: u64,
+}
+
+impl Topology {
+    /// The topology of `scene`; `has_body` says which ids the world already models (they
+    /// stay in it while the host's values for them are unusable).
+    pub(crate) fn of<N: Clone + Eq + Hash>(
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+        has_body: impl Fn(&N) -> bool,
+    ) -> Self {
+        let hasher = id_hasher();
+        let mut first: HashMap<&N, usize, IdHasher> =
+            HashMap::with_capacity_and_hasher(scene.nodes.len(), IdHasher::default());
+        let mut nodes = Vec::with_capacity(scene.nodes.len());
+        let mut hash: u64 = 0;
+        let mut ids = Vec::with_capacity(scene.nodes.len());
+        for (i, node) in scene.nodes.iter().enumerate() {
+            if first.contains_key(&node.id) {
+                ids.push(0);
+                continue;
+            }
+            let id_hash = hasher.hash_one(&node.id);
+            ids.push(id_hash);
+            if node_is_valid(node) || has_body(&node.id) {
+                first.insert(&node.id, i);
+                nodes.push(i);
+                hash = hash.wrapping_add(mix(id_hash ^ NODE_TAG));
+                if extras.pinned.contains(&node.id) {
+                    hash = hash.wrapping_add(mix(id_hash ^ PIN_TAG));
+                }
+            }
+        }
+        let mut seen: HashSet<(usize, usize), IdHasher> =
+            HashSet::with_capacity_and_hasher(scene.edges.len(), IdHasher::default());
+        let mut edges = Vec::with_capacity(scene.edges.len());
+        for edge in &scene.edges {
+            let (Some(&a), Some(&b)) = (first.get(&edge.source), first.get(&edge.target)) else {
+                continue;
+            };
+            if a == b || !seen.insert((a.min(b), a.max(b))) {
+                continue;
+            }
+            edges.push((a, b));
+            let (ha, hb) = (ids[a], ids[b]);
+            hash = hash.wrapping_add(mix(mix(ha.min(hb) ^ EDGE_TAG) ^ ha.max(hb)));
+        }
+        Self {
+            nodes,
+            edges,
+            hash: if hash == 0 { 1 } else { hash },
+        }
+    }
+}

@@ -1,0 +1,138 @@
+//! Input validation: what counts as bad input, and the error that names it.
+
+use std::collections::HashMap;
+use std::fmt;
+use std::hash::Hash;
+
+use euclid::default::Point2D;
+
+use crate::layout::IdHasher;
+use crate::scene::{CanvasNode, CanvasSceneInput};
+
+/// Bad input rejected by [`RapierLayout::try_step`](crate::RapierLayout::try_step). A
+/// rejected call changes nothing: not the world, not the state, not the counters.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum LayoutError<N> {
+    /// A node's position has a NaN or infinite coordinate.
+    NonFinitePosition {
+        /// The node.
+        node: N,
+        /// The position the host gave.
+        position: Point2D<f32>,
+    },
+    /// A node's radius is NaN, infinite or negative.
+    InvalidRadius {
+        /// The node.
+        node: N,
+        /// The radius the host gave.
+        radius: f32,
+    },
+    /// Two scene nodes share an id.
+    DuplicateNode {
+        /// The id.
+        node: N,
+        /// Index of its first occurrence in `scene.nodes`.
+        first: usize,
+        /// Index of the repeat.
+        second: usize,
+    },
+    /// An edge names a node that is not in the scene.
+    UnknownEdgeEndpoint {
+        /// Index of the edge in `scene.edges`.
+        edge: usize,
+        /// The edge's source.
+        source: N,
+        /// The edge's target.
+        target: N,
+        /// The endpoint that is missing.
+        missing: N,
+    },
+}
+
+impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            LayoutError::NonFinitePosition { node, position } => write!(
+                f,
+                "node {node:?} has a non-finite position ({}, {})",
+                position.x, position.y
+            ),
+            LayoutError::InvalidRadius { node, radius } => write!(
+                f,
+                "node {node:?} has an invalid radius {radius} (must be finite and >= 0)"
+            ),
+            LayoutError::DuplicateNode {
+                node,
+                first,
+                second,
+            } => write!(
+                f,
+                "node id {node:?} appears twice in the scene (nodes[{first}] and nodes[{second}])"
+            ),
+            LayoutError::UnknownEdgeEndpoint {
+                edge,
+                source,
+                target,
+                missing,
+            } => write!(
+                f,
+                "edge {edge} ({source:?} -> {target:?}) names node {missing:?}, which is not in the scene"
+            ),
+        }
+    }
+}
+
+impl<N: fmt::Debug> std::error::Error for LayoutError<N> {}
+
+/// Whether the layout can use this node's values: a finite position and a finite,
+/// non-negative radius (0 means the default radius).
+pub(crate) fn node_is_valid<N>(node: &CanvasNode<N>) -> bool {
+    node.position.x.is_finite()
+        && node.position.y.is_finite()
+        && node.radius.is_finite()
+        && node.radius >= 0.0
+}
+
+/// The first problem in `scene`, in scene order: nodes first, then edges.
+pub(crate) fn validate<N: Clone + Eq + Hash>(
+    scene: &CanvasSceneInput<N>,
+) -> Result<(), LayoutError<N>> {
+    let mut first: HashMap<&N, usize, IdHasher> =
+        HashMap::with_capacity_and_hasher(scene.nodes.len(), IdHasher::default());
+    for (i, node) in scene.nodes.iter().enumerate() {
+        if !(node.position.x.is_finite() && node.position.y.is_finite()) {
+            return Err(LayoutError::NonFinitePosition {
+                node: node.id.clone(),
+                position: node.position,
+            });
+        }
+        if !(node.radius.is_finite() && node.radius >= 0.0) {
+            return Err(LayoutError::InvalidRadius {
+                node: node.id.clone(),
+                radius: node.radius,
+            });
+        }
+        if let Some(&j) = first.get(&node.id) {
+            return Err(LayoutError::DuplicateNode {
+                node: node.id.clone(),
+                first: j,
+                second: i,
+            });
+        }
+        first.insert(&node.id, i);
+    }
+    for (i, edge) in scene.edges.iter().enumerate() {
+        for end in [&edge.source, &edge.target] {
+            if !first.contains_key(end) {
+                return Err(LayoutError::UnknownEdgeEndpoint {
+                    edge: i,
+                    source: edge.source.clone(),
+                    target: edge.target.clone(),
+                    missing: end.clone(),
+                });
+            }
+        }
+    }
+    Ok(())
+}

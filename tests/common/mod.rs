@@ -1,0 +1,127 @@
+//! Shared helpers for the integration tests: a minimal host loop and scene loading.
+#![allow(dead_code)]
+
+use std::collections::HashMap;
+use std::hash::Hash;
+
+use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
+use graph_canvas_layout::{
+    CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, DeltaMap, Layout, LayoutExtras,
+    RapierLayout, RapierLayoutConfig, RapierLayoutState,
+};
+
+pub const FRAME: f32 = 1.0 / 60.0;
+
+/// A host canvas: owns positions, calls `step` once per frame, adds the deltas.
+pub struct Host<N: Clone + Eq + Hash> {
+    pub scene: CanvasSceneInput<N>,
+    pub layout: RapierLayout<N>,
+    pub state: RapierLayoutState,
+    pub extras: LayoutExtras<N>,
+}
+
+impl<N: Clone + Eq + Hash + std::fmt::Debug> Host<N> {
+    pub fn new(scene: CanvasSceneInput<N>, config: RapierLayoutConfig) -> Self {
+        Self {
+            scene,
+            layout: RapierLayout::new(config),
+            state: RapierLayoutState::default(),
+            extras: LayoutExtras::default(),
+        }
+    }
+
+    /// One frame of `dt` seconds; returns the deltas after applying them.
+    pub fn frame(&mut self, dt: f32) -> DeltaMap<N> {
+        let deltas = self.layout.step(
+            &self.scene,
+            &mut self.state,
+            dt,
+            &CanvasViewport::default(),
+            &self.extras,
+        );
+        apply(&mut self.scene, &deltas);
+        deltas
+    }
+
+    pub fn frames(&mut self, n: usize) {
+        for _ in 0..n {
+            self.frame(FRAME);
+        }
+    }
+
+    pub fn pos(&self, id: &N) -> Point2D<f32> {
+        self.scene
+            .nodes
+            .iter()
+            .find(|n| &n.id == id)
+            .unwrap_or_else(|| panic!("node {id:?} not in scene"))
+            .position
+    }
+
+    pub fn set_pos(&mut self, id: &N, p: Point2D<f32>) {
+        let node = self.scene.nodes.iter_mut().find(|n| &n.id == id).expect("node in scene");
+        node.position = p;
+    }
+
+    pub fn world_pos(&self, id: &N) -> Point2D<f32> {
+        self.layout
+            .world()
+            .and_then(|w| w.get_position(id))
+            .unwrap_or_else(|| panic!("node {id:?} has no body"))
+    }
+}
+
+pub fn apply<N: Clone + Eq + Hash>(scene: &mut CanvasSceneInput<N>, deltas: &DeltaMap<N>) {
+    for node in &mut scene.nodes {
+        if let Some(d) = deltas.get(&node.id) {
+            node.position += *d;
+        }
+    }
+}
+
+pub fn node<N>(id: N, x: f32, y: f32) -> CanvasNode<N> {
+    CanvasNode::new(id, Point2D::new(x, y))
+}
+
+pub fn edge<N>(a: N, b: N) -> CanvasEdge<N> {
+    CanvasEdge::new(a, b)
+}
+
+pub fn dist(a: Point2D<f32>, b: Point2D<f32>) -> f32 {
+    (a - b).length()
+}
+
+pub fn speed(v: Vector2D<f32>) -> f32 {
+    v.length()
+}
+
+/// Loads a scene from `scenes/<name>.json` (`{"nodes":[{"id","x","y","radius"}],"edges":[[a,b]]}`).
+pub fn load_scene(name: &str) -> CanvasSceneInput<u32> {
+    #[derive(serde::Deserialize)]
+    struct Node {
+        id: u32,
+        x: f32,
+        y: f32,
+        radius: f32,
+    }
+    #[derive(serde::Deserialize)]
+    struct Scene {
+        nodes: Vec<Node>,
+        edges: Vec<(u32, u32)>,
+    }
+    let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let scene: Scene = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{path}: {e}"));
+    CanvasSceneInput::new(
+        scene
+            .nodes
+            .into_iter()
+            .map(|n| node(n.id, n.x, n.y).with_radius(n.radius))
+            .collect(),
+        scene.edges.into_iter().map(|(a, b)| edge(a, b)).collect(),
+    )
+}
+
+pub fn positions<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> HashMap<N, Point2D<f32>> {
+    scene.nodes.iter().map(|n| (n.id.clone(), n.position)).collect()
+}

@@ -283,11 +283,18 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.apply_config_changes();
         let mut disturbed = self.sync_topology(scene, extras);
         disturbed |= self.sync_in(scene, extras, plan.frame_dt);
-        let gravity = Vector2D::new(finite_or(state.gravity_x, 0.0), finite_or(state.gravity_y, 0.0));
+        let gravity = Vector2D::new(
+            finite_or(state.gravity_x, 0.0),
+            finite_or(state.gravity_y, 0.0),
+        );
         self.simulate(&plan, gravity);
         state.simulated_time += f64::from(plan.simulated());
         let (deltas, max_speed) = self.sync_out(scene);
-        self.track_rest(disturbed || !self.drives.is_empty(), max_speed, plan.simulated());
+        self.track_rest(
+            disturbed || !self.drives.is_empty(),
+            max_speed,
+            plan.simulated(),
+        );
         deltas
     }
 
@@ -402,7 +409,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         }
         let topology = {
             let world = self.world.as_ref();
-            Topology::of(scene, extras, |id| world.is_some_and(|w| w.contains_node(id)))
+            Topology::of(scene, extras, |id| {
+                world.is_some_and(|w| w.contains_node(id))
+            })
         };
         self.cached_edges.clear();
         self.cached_edges.extend(
@@ -414,8 +423,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         if self.world.is_some() && topology.hash == self.topology_hash {
             return false;
         }
-        let rebuild = self.world.is_none()
-            || self.config.topology_update == TopologyUpdate::Rebuild;
+        let rebuild =
+            self.world.is_none() || self.config.topology_update == TopologyUpdate::Rebuild;
         if rebuild {
             self.build_world(scene, &topology);
         } else {
@@ -524,7 +533,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
 
     /// Pass 2. Returns whether the host disturbed the layout (drag, release, host move,
     /// pin change).
-    fn sync_in(&mut self, scene: &CanvasSceneInput<N>, extras: &LayoutExtras<N>, frame_dt: f32) -> bool {
+    fn sync_in(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+        frame_dt: f32,
+    ) -> bool {
         self.drives.clear();
         let check_drags = !extras.dragging.is_empty();
         let mut disturbed = false;
@@ -695,7 +709,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     }
 
     fn track_rest(&mut self, disturbed: bool, max_speed: f32, simulated: f32) {
-        if disturbed || !(max_speed <= self.config.rest_speed) {
+        let calm = max_speed.is_finite() && max_speed <= self.config.rest_speed;
+        if disturbed || !calm {
             self.calm_time = 0.0;
         } else {
             self.calm_time += simulated;
@@ -707,7 +722,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
 /// Whether the host moved a free node: its position differs from its body's by more
 /// than float noise at that magnitude (deltas below the report threshold included).
 fn moved_by_host(body: Point2D<f32>, host: Point2D<f32>) -> bool {
-    let magnitude = body.x.abs().max(body.y.abs()).max(host.x.abs()).max(host.y.abs());
+    let magnitude = body
+        .x
+        .abs()
+        .max(body.y.abs())
+        .max(host.x.abs())
+        .max(host.y.abs());
     let tolerance = 0.01_f32.max(magnitude * 8.0 * f32::EPSILON);
     (body - host).square_length() > tolerance * tolerance
 }

@@ -4,8 +4,8 @@
 use std::sync::Mutex;
 
 use rapier2d::prelude::{
-    ColliderSet, CollisionEvent, ContactPair, EventHandler, Real,
-    RigidBodySet, SoftBodySet, SoftBodyTearEvent,
+    ColliderSet, CollisionEvent, ContactPair, EventHandler, Real, RigidBodySet, SoftBodySet,
+    SoftBodyTearEvent,
 };
 use serde::{Deserialize, Serialize};
 
@@ -71,6 +71,5 @@ impl EventHandler for CollisionCollector {
     ) {
     }
 
-    fn handle_soft_body_tear_event(&self, _soft_bodies: &SoftBodySet, _event: &SoftBodyTearEvent) {
-    }
+    fn handle_soft_body_tear_event(&self, _soft_bodies: &SoftBodySet, _event: &SoftBodyTearEvent) {}
 }

@@ -76,6 +76,7 @@ mod events;
 mod joints;
 mod layout;
 mod scene;
+mod scene_file;
 mod timestep;
 mod topology;
 mod validation;
@@ -92,8 +93,14 @@ pub use config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, TopologyUpdate};
 pub use events::SceneEvent;
 pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeSet};
 pub use scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
+pub use scene_file::{SceneFile, SceneFileNode};
 pub use timestep::{StepPlan, DEFAULT_TIMESTEP};
 pub use validation::LayoutError;
 pub use world::{
     RapierSceneWorld, WorldOptions, MAX_PENDING_EVENTS, MIN_BODY_MASS, POSITION_EPSILON,
 };
+
+/// The README's examples run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

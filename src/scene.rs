@@ -120,7 +120,10 @@ impl Default for CanvasViewport {
     /// An 800 × 600 rectangle at the origin with scale factor 1.
     fn default() -> Self {
         Self {
-            rect: Rect::new(Point2D::origin(), euclid::default::Size2D::new(800.0, 600.0)),
+            rect: Rect::new(
+                Point2D::origin(),
+                euclid::default::Size2D::new(800.0, 600.0),
+            ),
             scale_factor: 1.0,
         }
     }

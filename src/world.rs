@@ -233,7 +233,11 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// assert_eq!(world.get_position(&"a"), Some(Point2D::new(5.0, 6.0)));
     /// assert_eq!(world.body_type(&"a"), Some(graph_canvas_layout::rapier2d::prelude::RigidBodyType::Fixed));
     /// ```
-    pub fn build_bodies(&mut self, bindings: &[NodeAvatarBinding<N>], snapshots: &[NodeSnapshot<N>]) {
+    pub fn build_bodies(
+        &mut self,
+        bindings: &[NodeAvatarBinding<N>],
+        snapshots: &[NodeSnapshot<N>],
+    ) {
         for (i, binding) in bindings.iter().enumerate() {
             let snapshot = snapshots
                 .get(i)
@@ -297,7 +301,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             self.colliders
                 .insert_with_parent(collider, body, &mut self.bodies)
         });
-        self.index.insert(binding.node_id.clone(), slot_index as u32);
+        self.index
+            .insert(binding.node_id.clone(), slot_index as u32);
         self.slots.push(NodeSlot {
             id: binding.node_id.clone(),
             serial: self.next_serial,
@@ -517,7 +522,10 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             let slot = body.user_data as usize;
             let translation = body.translation();
             if !translation.is_finite() {
-                let fallback = self.slots.get(slot).map_or(Point2D::origin(), |s| s.initial);
+                let fallback = self
+                    .slots
+                    .get(slot)
+                    .map_or(Point2D::origin(), |s| s.initial);
                 body.set_translation(to_vector(fallback), false);
             }
             body.set_linvel(Vector::ZERO, false);

@@ -7,7 +7,7 @@ use std::hash::Hash;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
     CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, DeltaMap, Layout, LayoutExtras,
-    RapierLayout, RapierLayoutConfig, RapierLayoutState,
+    RapierLayout, RapierLayoutConfig, RapierLayoutState, SceneFile,
 };
 
 pub const FRAME: f32 = 1.0 / 60.0;
@@ -59,7 +59,12 @@ impl<N: Clone + Eq + Hash + std::fmt::Debug> Host<N> {
     }
 
     pub fn set_pos(&mut self, id: &N, p: Point2D<f32>) {
-        let node = self.scene.nodes.iter_mut().find(|n| &n.id == id).expect("node in scene");
+        let node = self
+            .scene
+            .nodes
+            .iter_mut()
+            .find(|n| &n.id == id)
+            .expect("node in scene");
         node.position = p;
     }
 
@@ -95,33 +100,18 @@ pub fn speed(v: Vector2D<f32>) -> f32 {
     v.length()
 }
 
-/// Loads a scene from `scenes/<name>.json` (`{"nodes":[{"id","x","y","radius"}],"edges":[[a,b]]}`).
+/// Loads a scene from `scenes/<name>.json`.
 pub fn load_scene(name: &str) -> CanvasSceneInput<u32> {
-    #[derive(serde::Deserialize)]
-    struct Node {
-        id: u32,
-        x: f32,
-        y: f32,
-        radius: f32,
-    }
-    #[derive(serde::Deserialize)]
-    struct Scene {
-        nodes: Vec<Node>,
-        edges: Vec<(u32, u32)>,
-    }
     let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    let scene: Scene = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{path}: {e}"));
-    CanvasSceneInput::new(
-        scene
-            .nodes
-            .into_iter()
-            .map(|n| node(n.id, n.x, n.y).with_radius(n.radius))
-            .collect(),
-        scene.edges.into_iter().map(|(a, b)| edge(a, b)).collect(),
-    )
+    let file: SceneFile = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{path}: {e}"));
+    file.into_scene()
 }
 
 pub fn positions<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> HashMap<N, Point2D<f32>> {
-    scene.nodes.iter().map(|n| (n.id.clone(), n.position)).collect()
+    scene
+        .nodes
+        .iter()
+        .map(|n| (n.id.clone(), n.position))
+        .collect()
 }

@@ -21,7 +21,7 @@ use crate::config::{BodyKindPolicy, RapierLayoutConfig, TopologyUpdate};
 use crate::events::SceneEvent;
 use crate::layout::{DeltaMap, IdHasher, Layout, LayoutExtras};
 use crate::scene::{CanvasNode, CanvasSceneInput, CanvasViewport};
-use crate::timestep::StepPlan;
+use crate::timestep::{StepPlan, DEFAULT_TIMESTEP};
 use crate::topology::Topology;
 use crate::validation::{node_is_valid, validate, LayoutError};
 use crate::world::{finite_or, RapierSceneWorld, WorldOptions};
@@ -116,6 +116,8 @@ pub struct RapierLayout<N> {
     drives: Vec<Drive>,
     calm_time: f32,
     converged: bool,
+    /// This call's fixed timestep; new joints are tuned for it.
+    fixed_dt: f32,
 }
 
 impl<N> std::fmt::Debug for RapierLayout<N> {
@@ -161,6 +163,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             drives: Vec::new(),
             calm_time: 0.0,
             converged: false,
+            fixed_dt: DEFAULT_TIMESTEP,
         }
     }
 
@@ -280,6 +283,11 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.config.max_frame_time,
             self.config.max_substeps,
         );
+        self.fixed_dt = if state.dt.is_finite() && state.dt > 0.0 {
+            state.dt
+        } else {
+            DEFAULT_TIMESTEP
+        };
         self.apply_config_changes();
         let mut disturbed = self.sync_topology(scene, extras);
         disturbed |= self.sync_in(scene, extras, plan.frame_dt);
@@ -447,9 +455,21 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
 
     fn build_world(&mut self, scene: &CanvasSceneInput<N>, topology: &Topology) {
         let mut world = RapierSceneWorld::with_options(self.world_options());
+        world.set_timestep(self.fixed_dt);
+        let mut spread = CoincidenceSpreader::default();
         for &i in &topology.nodes {
             let node = &scene.nodes[i];
-            world.insert_node(&self.binding_for(node), node.position);
+            // A node whose values are unusable this call keeps its old body's position.
+            let position = if node_is_valid(node) {
+                node.position
+            } else {
+                match self.world.as_ref().and_then(|w| w.get_position(&node.id)) {
+                    Some(p) => p,
+                    None => continue,
+                }
+            };
+            world.insert_node(&self.binding_for(node), spread.place(position));
+            world.rebase_initial_position(&node.id, position);
         }
         for &(a, b) in &topology.edges {
             world.insert_edge_joint(
@@ -490,9 +510,13 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             world.remove_node(id);
         }
         // Insertions, in scene order.
+        world.set_timestep(self.fixed_dt);
+        let mut spread = CoincidenceSpreader::default();
         for (binding, &i) in bindings.iter().zip(&topology.nodes) {
             if !world.contains_node(&binding.node_id) {
-                world.insert_node(binding, scene.nodes[i].position);
+                let host = scene.nodes[i].position;
+                world.insert_node(binding, spread.place(host));
+                world.rebase_initial_position(&binding.node_id, host);
             }
         }
         // Joints: drop those whose edge went away, add the new ones.
@@ -596,7 +620,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                         }
                         body.set_linvel(Vector::new(velocity.x, velocity.y), true);
                         disturbed = true;
-                    } else if moved_by_host(body_pos, host) {
+                    } else if !world.slots[s].fresh && moved_by_host(body_pos, host) {
+                        let body = world.body_at_mut(s);
                         body.set_translation(Vector::new(host.x, host.y), true);
                         body.set_linvel(Vector::ZERO, true);
                         disturbed = true;
@@ -624,6 +649,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             }
             let slot = &mut world.slots[s];
             slot.frozen = false;
+            slot.fresh = false;
             slot.pinned = m.pinned;
             slot.initial = host;
             if dragging {
@@ -716,6 +742,28 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.calm_time += simulated;
         }
         self.converged = self.calm_time >= REST_TIME;
+    }
+}
+
+/// Spreads nodes inserted at exactly the same position along a golden-angle spiral
+/// (k-th repeat at `√k` units), so contacts get distinct normals and push the nodes
+/// apart radially instead of along one arbitrary axis.
+#[derive(Default)]
+struct CoincidenceSpreader {
+    seen: std::collections::HashMap<(u32, u32), u32, IdHasher>,
+}
+
+impl CoincidenceSpreader {
+    fn place(&mut self, p: Point2D<f32>) -> Point2D<f32> {
+        let count = self.seen.entry((p.x.to_bits(), p.y.to_bits())).or_insert(0);
+        let k = *count;
+        *count += 1;
+        if k == 0 {
+            return p;
+        }
+        let angle = k as f32 * 2.399_963; // the golden angle, radians
+        let r = (k as f32).sqrt();
+        p + Vector2D::new(angle.cos(), angle.sin()) * r
     }
 }
 

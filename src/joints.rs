@@ -26,11 +26,27 @@ fn non_negative(x: f32) -> f32 {
     }
 }
 
+/// The stiffest spring a timestep `dt` resolves between bodies of reduced mass
+/// `reduced_mass`: natural frequency `1 / dt`, i.e. `k = m / dt²`. Stiffer springs would
+/// correct their whole stretch in less than one step; in a graph whose edges cannot all
+/// have their rest length (most graphs), such springs fight each other every step and
+/// the layout never settles. Above this stiffness a spring behaves as this one: as
+/// stiff as the timestep can show.
+pub fn max_resolved_stiffness(reduced_mass: f32, dt: f32) -> f32 {
+    let limit = reduced_mass / (dt * dt);
+    if limit.is_finite() && limit > 0.0 {
+        limit
+    } else {
+        f32::MAX
+    }
+}
+
 /// The rapier joint for one edge, or `None` for [`EdgeJoint::None`].
 ///
-/// `reduced_mass` is `m1 m2 / (m1 + m2)` of the two bodies; the rope uses it to turn
-/// its stiffness (force per unit of stretch) into the limit's natural frequency.
-pub(crate) fn rapier_joint(kind: &EdgeJoint, reduced_mass: f32) -> Option<GenericJoint> {
+/// `reduced_mass` is `m1 m2 / (m1 + m2)` of the two bodies: the rope uses it to turn
+/// its stiffness (force per unit of stretch) into the limit's natural frequency, and
+/// the spring to cap its stiffness at what the timestep `dt` resolves.
+pub(crate) fn rapier_joint(kind: &EdgeJoint, reduced_mass: f32, dt: f32) -> Option<GenericJoint> {
     match *kind {
         EdgeJoint::Spring {
             rest_length,
@@ -39,7 +55,7 @@ pub(crate) fn rapier_joint(kind: &EdgeJoint, reduced_mass: f32) -> Option<Generi
         } => Some(
             SpringJointBuilder::new(
                 non_negative(rest_length),
-                non_negative(stiffness),
+                non_negative(stiffness).min(max_resolved_stiffness(reduced_mass, dt)),
                 non_negative(damping),
             )
             .spring_model(MotorModel::ForceBased)

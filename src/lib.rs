@@ -91,6 +91,7 @@ pub use bindings::{
 };
 pub use config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, TopologyUpdate};
 pub use events::SceneEvent;
+pub use joints::max_resolved_stiffness;
 pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeSet};
 pub use scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
 pub use scene_file::{SceneFile, SceneFileNode};

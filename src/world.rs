@@ -80,6 +80,9 @@ pub(crate) struct NodeSlot<N> {
     pub(crate) frozen: bool,
     pub(crate) drag_position: Point2D<f32>,
     pub(crate) drag_velocity: Vector2D<f32>,
+    /// Inserted during this call: its body may sit off the host's position (coincident
+    /// nodes are spread), which is not a host move.
+    pub(crate) fresh: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -317,6 +320,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             frozen: false,
             drag_position: position,
             drag_velocity: Vector2D::zero(),
+            fresh: true,
         });
         self.next_serial += 1;
         true
@@ -376,7 +380,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             return false;
         }
         let reduced_mass = sa.mass * sb.mass / (sa.mass + sb.mass);
-        let Some(joint) = rapier_joint(kind, reduced_mass) else {
+        let Some(joint) = rapier_joint(kind, reduced_mass, self.params.dt) else {
             return false;
         };
         let handle = self.impulse_joints.insert(sa.body, sb.body, joint, true);
@@ -760,6 +764,12 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     pub fn linear_velocity(&self, node: &N) -> Option<Vector2D<f32>> {
         let v = self.body_at(self.slot_of(node)?).linvel();
         Some(Vector2D::new(v.x, v.y))
+    }
+
+    /// Whether the node's body takes part in the simulation (rapier disables bodies whose
+    /// state went non-finite; this world re-enables them at once).
+    pub fn is_enabled(&self, node: &N) -> Option<bool> {
+        Some(self.body_at(self.slot_of(node)?).is_enabled())
     }
 
     /// Whether the node's body is asleep (at rest, skipped by the solver).

@@ -1,27 +1,26 @@
-use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::*;
 fn main() {
-    let mut scene =
-        CanvasSceneInput::new(vec![CanvasNode::new(6u32, Point2D::new(0.0, 0.0))], vec![]);
+    let text = std::fs::read_to_string("scenes/n200_e500.json").unwrap();
+    let f: SceneFile = serde_json::from_str(&text).unwrap();
+    let mut scene = f.into_scene();
     let mut layout = RapierLayout::default();
     let mut st = RapierLayoutState::default();
     let ex = LayoutExtras::default();
-    let show = |l: &RapierLayout<u32>, tag: &str| {
-        println!(
-            "{tag}: bodies {:?} ids {:?}",
-            l.world().map(|w| w.body_count()),
-            l.world().map(|w| w.node_ids().cloned().collect::<Vec<_>>())
-        )
-    };
-    layout.step(&scene, &mut st, 1.0 / 60.0, &Default::default(), &ex);
-    show(&layout, "1");
-    scene.nodes[0].position.x = f32::NAN;
-    scene.nodes.push(CanvasNode::new(0, Point2D::new(0.0, 0.0)));
-    layout.step(&scene, &mut st, 1.0 / 60.0, &Default::default(), &ex);
-    show(&layout, "2");
-    layout.step(&scene, &mut st, 1.0 / 60.0, &Default::default(), &ex);
-    show(&layout, "3");
-    scene.nodes[0].position = Point2D::new(60.0, 0.0);
-    layout.step(&scene, &mut st, 1.0 / 60.0, &Default::default(), &ex);
-    show(&layout, "4");
+    let mode = std::env::args().nth(1).unwrap_or_default();
+    if mode == "asleep" {
+        while !layout.is_converged(&st) {
+            let d = layout.step(&scene, &mut st, 1.0/60.0, &Default::default(), &ex);
+            for n in &mut scene.nodes { if let Some(x) = d.get(&n.id) { n.position += *x; } }
+        }
+        eprintln!("converged after {}", st.step_count);
+        for _ in 0..200000 {
+            let d = layout.step(&scene, &mut st, 1.0/60.0, &Default::default(), &ex);
+            for n in &mut scene.nodes { if let Some(x) = d.get(&n.id) { n.position += *x; } }
+        }
+    } else {
+        for _ in 0..3000 {
+            let d = layout.step(&scene, &mut st, 1.0/60.0, &Default::default(), &ex);
+            for n in &mut scene.nodes { if let Some(x) = d.get(&n.id) { n.position += *x; } }
+        }
+    }
 }

@@ -193,6 +193,33 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.patches
     }
 
+    /// Whether `scene` and `extras` differ in topology (node set, edge set, pins) from
+    /// what the world models: the check every `step` starts with. While the host passes
+    /// the same nodes and edges in the same order it costs one id lookup per node and
+    /// one comparison per edge; otherwise it computes the order-free hash (O(n + e)).
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasNode, CanvasSceneInput, Layout,
+    ///     LayoutExtras, RapierLayout, RapierLayoutState};
+    /// let mut scene = CanvasSceneInput::new(vec![CanvasNode::new(1_u32, Point2D::origin())], vec![]);
+    /// let mut layout = RapierLayout::default();
+    /// let extras = LayoutExtras::default();
+    /// layout.step(&scene, &mut RapierLayoutState::default(), 0.016, &Default::default(), &extras);
+    /// assert!(!layout.topology_changed(&scene, &extras));
+    /// scene.nodes.push(CanvasNode::new(2, Point2D::new(50.0, 0.0)));
+    /// assert!(layout.topology_changed(&scene, &extras));
+    /// ```
+    pub fn topology_changed(&mut self, scene: &CanvasSceneInput<N>, extras: &LayoutExtras<N>) -> bool {
+        let nodes_changed = self.match_nodes(scene, extras);
+        if !nodes_changed && self.topology_hash != 0 && self.edges_match_cache(scene) {
+            return false;
+        }
+        let world = self.world.as_ref();
+        let topology = Topology::of(scene, extras, |id| world.is_some_and(|w| w.contains_node(id)));
+        topology.hash != self.topology_hash
+    }
+
     /// Drains the contact events recorded since the last call (empty unless
     /// [`RapierLayoutConfig::contact_events`] is on).
     pub fn drain_events(&mut self) -> Vec<SceneEvent<N>> {
@@ -277,17 +304,15 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.drop_world();
             return DeltaMap::default();
         }
+        let (_, _, substeps) = self.config.accuracy.settings();
+        // New joints are tuned for the longest substep this configuration takes.
+        self.fixed_dt = sanitized_timestep(state.dt) / substeps as f32;
         let plan = StepPlan::new(
             dt,
-            state.dt,
+            self.fixed_dt,
             self.config.max_frame_time,
-            self.config.max_substeps,
+            self.config.max_substeps.saturating_mul(substeps),
         );
-        self.fixed_dt = if state.dt.is_finite() && state.dt > 0.0 {
-            state.dt
-        } else {
-            DEFAULT_TIMESTEP
-        };
         self.apply_config_changes();
         let mut disturbed = self.sync_topology(scene, extras);
         disturbed |= self.sync_in(scene, extras, plan.frame_dt);
@@ -366,17 +391,25 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     fn match_nodes(&mut self, scene: &CanvasSceneInput<N>, extras: &LayoutExtras<N>) -> bool {
         self.stamp += 1;
         let stamp = self.stamp;
-        self.matches.clear();
         let Some(world) = self.world.as_mut() else {
+            self.matches.clear();
             return true;
         };
         let check_pins = !extras.pinned.is_empty();
         let mut changed = false;
         let mut seen = 0;
-        for node in &scene.nodes {
+        let previous = std::mem::take(&mut self.matches);
+        self.matches.reserve(scene.nodes.len());
+        for (i, node) in scene.nodes.iter().enumerate() {
             let valid = node_is_valid(node);
             let pinned = check_pins && extras.pinned.contains(&node.id);
-            let slot = match world.slot_of(&node.id) {
+            // The host usually passes its nodes in the same order: the slot found for this
+            // index last call is checked with one id comparison instead of a hash lookup.
+            let cached = previous
+                .get(i)
+                .map(|m| m.slot as usize)
+                .filter(|&s| world.slots.get(s).is_some_and(|slot| slot.id == node.id));
+            let slot = match cached.or_else(|| world.slot_of(&node.id)) {
                 Some(s) if world.slots[s].stamp != stamp => {
                     let slot = &mut world.slots[s];
                     slot.stamp = stamp;
@@ -588,16 +621,19 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             }
             let was_dragging = world.slots[s].dragging;
             let host = node.position;
-            let body_pos = world.position_at(s);
-            let body = world.body_at_mut(s);
+            // Read first: a mutable access marks the body as modified for rapier, which
+            // then re-processes it (and may wake it) at the next step.
+            let body = world.body_at(s);
             let current = body.body_type();
+            let body_pos = Point2D::new(body.translation().x, body.translation().y);
             match desired {
                 None => {
                     // Unusable input: hold the body still where it is.
                     if current == RigidBodyType::Dynamic {
+                        let body = world.body_at_mut(s);
                         body.set_body_type(RigidBodyType::KinematicPositionBased, true);
+                        body.set_linvel(Vector::ZERO, false);
                     }
-                    body.set_linvel(Vector::ZERO, false);
                     let slot = &mut world.slots[s];
                     slot.frozen = true;
                     slot.dragging = false;
@@ -629,13 +665,16 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 }
                 Some(kind) => {
                     if current != kind {
+                        let body = world.body_at_mut(s);
                         body.set_body_type(kind, true);
                         body.set_linvel(Vector::ZERO, true);
                         disturbed = true;
                     }
                     if body_pos != host {
                         if kind == RigidBodyType::Fixed {
-                            body.set_translation(Vector::new(host.x, host.y), true);
+                            world
+                                .body_at_mut(s)
+                                .set_translation(Vector::new(host.x, host.y), true);
                         } else {
                             self.drives.push(Drive {
                                 slot: s as u32,
@@ -685,7 +724,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         } else {
             f32::MAX
         };
-        params.num_solver_iterations = config.solver_iterations.max(1);
+        let (iterations, pgs_iterations, _) = config.accuracy.settings();
+        params.num_solver_iterations = iterations;
+        params.num_internal_pgs_iterations = pgs_iterations;
         for k in 0..plan.substeps {
             if !self.drives.is_empty() {
                 let t = (k + 1) as f32 / plan.substeps as f32;
@@ -745,6 +786,15 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     }
 }
 
+/// The state's fixed timestep, or 1/60 s when it is unset or unusable.
+fn sanitized_timestep(dt: f32) -> f32 {
+    if dt.is_finite() && dt > 0.0 {
+        dt
+    } else {
+        DEFAULT_TIMESTEP
+    }
+}
+
 /// Spreads nodes inserted at exactly the same position along a golden-angle spiral
 /// (k-th repeat at `√k` units), so contacts get distinct normals and push the nodes
 /// apart radially instead of along one arbitrary axis.
@@ -770,12 +820,12 @@ impl CoincidenceSpreader {
 /// Whether the host moved a free node: its position differs from its body's by more
 /// than float noise at that magnitude (deltas below the report threshold included).
 fn moved_by_host(body: Point2D<f32>, host: Point2D<f32>) -> bool {
-    let magnitude = body
-        .x
-        .abs()
-        .max(body.y.abs())
-        .max(host.x.abs())
-        .max(host.y.abs());
-    let tolerance = 0.01_f32.max(magnitude * 8.0 * f32::EPSILON);
-    (body - host).square_length() > tolerance * tolerance
+    const FLOOR: f32 = 0.01;
+    let gap_sq = (body - host).square_length();
+    if gap_sq <= FLOOR * FLOOR {
+        return false;
+    }
+    let magnitude = body.x.abs().max(body.y.abs()).max(host.x.abs()).max(host.y.abs());
+    let tolerance = FLOOR.max(magnitude * 8.0 * f32::EPSILON);
+    gap_sq > tolerance * tolerance
 }

@@ -89,13 +89,14 @@ pub use adapter::{RapierLayout, RapierLayoutState, REST_TIME};
 pub use bindings::{
     ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot, PhysicsMaterial, SceneBodyKind,
 };
-pub use config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, TopologyUpdate};
+pub use config::{Accuracy, BodyKindPolicy, EdgeJoint, RapierLayoutConfig, TopologyUpdate};
 pub use events::SceneEvent;
 pub use joints::max_resolved_stiffness;
 pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeSet};
 pub use scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
 pub use scene_file::{SceneFile, SceneFileNode};
 pub use timestep::{StepPlan, DEFAULT_TIMESTEP};
+pub use topology::topology_hash;
 pub use validation::LayoutError;
 pub use world::{
     RapierSceneWorld, WorldOptions, MAX_PENDING_EVENTS, MIN_BODY_MASS, POSITION_EPSILON,

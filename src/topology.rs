@@ -97,3 +97,29 @@ impl Topology {
         }
     }
 }
+
+/// The order-free topology hash of a scene: node ids, undirected de-duplicated edges
+/// (self-loops and edges naming missing nodes left out) and the pinned nodes. Input
+/// order does not change it; ids need `Hash + Eq`, never `Ord`. Nodes with unusable
+/// values are left out (the layout keeps those that already have a body).
+///
+/// # Example
+/// ```
+/// use graph_canvas_layout::{euclid::default::Point2D, topology_hash, CanvasEdge, CanvasNode,
+///     CanvasSceneInput, LayoutExtras};
+/// let a = CanvasSceneInput::new(
+///     vec![CanvasNode::new(1_u32, Point2D::origin()), CanvasNode::new(2, Point2D::origin())],
+///     vec![CanvasEdge::new(1, 2)],
+/// );
+/// let mut b = a.clone();
+/// b.nodes.reverse();
+/// b.edges[0] = CanvasEdge::new(2, 1);
+/// let extras = LayoutExtras::default();
+/// assert_eq!(topology_hash(&a, &extras), topology_hash(&b, &extras));
+/// ```
+pub fn topology_hash<N: Clone + Eq + Hash>(
+    scene: &CanvasSceneInput<N>,
+    extras: &LayoutExtras<N>,
+) -> u64 {
+    Topology::of(scene, extras, |_| false).hash
+}

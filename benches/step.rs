@@ -1,0 +1,157 @@
+//! Per-frame cost of the layout against rapier's own step, and what the persistent
+//! world saves over a rebuild per frame.
+//!
+//! Moving-state benchmarks time frames 30..270 of a layout started from the scene file
+//! (the graph is still in motion then) and restart from a fresh, warmed layout every 240
+//! timed frames, so every sample measures the same kind of state. `asleep` benchmarks
+//! time a layout that `is_converged`.
+
+mod common;
+
+use std::time::{Duration, Instant};
+
+use common::*;
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use graph_canvas_layout::{Accuracy, Layout, RapierLayoutConfig};
+
+const WARM: usize = 30;
+const CHUNK: u64 = 240;
+
+/// Times `iters` calls of `step` on fresh states made by `make` and warmed `WARM` frames.
+fn chunked<S>(iters: u64, mut make: impl FnMut() -> S, mut step: impl FnMut(&mut S)) -> Duration {
+    let mut total = Duration::ZERO;
+    let mut left = iters;
+    while left > 0 {
+        let mut state = make();
+        for _ in 0..WARM {
+            step(&mut state);
+        }
+        let n = left.min(CHUNK);
+        let started = Instant::now();
+        for _ in 0..n {
+            step(&mut state);
+        }
+        total += started.elapsed();
+        left -= n;
+    }
+    total
+}
+
+/// The layout's step while the graph moves; asserts it does move.
+fn persistent(c: &mut Criterion, name: &str, config: RapierLayoutConfig, label: &str) {
+    let scene = scene(name);
+    let probe = {
+        let mut host = Host::new(scene.clone(), config.clone());
+        (0..WARM).map(|_| host.frame().len()).last().unwrap_or(0)
+    };
+    assert!(probe > 0, "{name}: nothing moves after {WARM} frames, the benchmark would time a resting world");
+    c.bench_function(&format!("step/{name}/{label}"), |b| {
+        b.iter_custom(|iters| chunked(iters, || Host::new(scene.clone(), config.clone()), |h| {
+            black_box(h.frame());
+        }))
+    });
+}
+
+fn bare(c: &mut Criterion, name: &str, model: BareModel, label: &str) {
+    let scene = scene(name);
+    c.bench_function(&format!("step/{name}/{label}"), |b| {
+        b.iter_custom(|iters| chunked(iters, || Bare::new(&scene, model), |w| w.step()))
+    });
+}
+
+fn rebuild_per_step(c: &mut Criterion, name: &str) {
+    let scene = scene(name);
+    c.bench_function(&format!("step/{name}/rebuild_per_step"), |b| {
+        b.iter_custom(|iters| {
+            chunked(
+                iters,
+                || Host::new(scene.clone(), RapierLayoutConfig::default()),
+                |h| {
+                    // The plan's first revision: a fresh world every frame.
+                    h.layout = graph_canvas_layout::RapierLayout::new(RapierLayoutConfig::default());
+                    black_box(h.frame());
+                },
+            )
+        })
+    });
+}
+
+fn asleep(c: &mut Criterion, name: &str) {
+    let scene = scene(name);
+    let mut host = Host::new(scene.clone(), RapierLayoutConfig::default());
+    let mut frames = 0;
+    while !host.layout.is_converged(&host.state) {
+        host.frame();
+        frames += 1;
+        assert!(frames < 20_000, "{name} did not converge in 20,000 frames");
+    }
+    c.bench_function(&format!("step/{name}/asleep"), |b| b.iter(|| black_box(host.frame())));
+    let mut bare_world = Bare::new(&host.scene, BareModel::Layout);
+    for _ in 0..2000 {
+        bare_world.step();
+    }
+    c.bench_function(&format!("step/{name}/rapier_floor_asleep"), |b| b.iter(|| bare_world.step()));
+}
+
+fn topology_check(c: &mut Criterion) {
+    let scene = scene("n200_e500");
+    let mut host = Host::new(scene.clone(), RapierLayoutConfig::default());
+    host.frame();
+    let extras = host.extras.clone();
+    c.bench_function("topology_check/n200_e500", |b| {
+        b.iter(|| assert!(!host.layout.topology_changed(black_box(&host.scene), &extras)))
+    });
+    let mut shuffled = scene.clone();
+    shuffled.nodes.reverse();
+    shuffled.edges.reverse();
+    c.bench_function("topology_check/n200_e500/reordered_input", |b| {
+        b.iter(|| assert!(!host.layout.topology_changed(black_box(&shuffled), &extras)))
+    });
+    c.bench_function("topology_hash/n200_e500", |b| {
+        b.iter(|| graph_canvas_layout::topology_hash(black_box(&scene), &extras))
+    });
+}
+
+fn headline(c: &mut Criterion) {
+    persistent(c, "n200_e500", RapierLayoutConfig::default(), "persistent");
+    bare(c, "n200_e500", BareModel::Layout, "rapier_floor");
+    bare(c, "n200_e500", BareModel::Plan, "plan_model_floor");
+    rebuild_per_step(c, "n200_e500");
+    topology_check(c);
+    asleep(c, "n200_e500");
+}
+
+fn presets(c: &mut Criterion) {
+    for (label, accuracy) in [("fast", Accuracy::Fast), ("balanced", Accuracy::Balanced), ("precise", Accuracy::Precise)] {
+        let config = RapierLayoutConfig { accuracy, ..Default::default() };
+        persistent(c, "n200_e500", config, &format!("persistent_{label}"));
+    }
+}
+
+fn scaling(c: &mut Criterion) {
+    for name in ["n1000_e2500", "tree_1023", "grid_30x30", "star_2001", "ba_n2000"] {
+        persistent(c, name, RapierLayoutConfig::default(), "persistent");
+    }
+    rebuild_per_step(c, "n1000_e2500");
+}
+
+fn large(c: &mut Criterion) {
+    for name in ["n5000_e12500", "n10000_e25000"] {
+        persistent(c, name, RapierLayoutConfig::default(), "persistent");
+        let fast = RapierLayoutConfig { accuracy: Accuracy::Fast, ..Default::default() };
+        persistent(c, name, fast, "persistent_fast");
+        bare(c, name, BareModel::Plan, "plan_model_floor");
+    }
+}
+
+criterion_group! {
+    name = small;
+    config = Criterion::default().sample_size(30).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(4));
+    targets = headline, presets, scaling
+}
+criterion_group! {
+    name = big;
+    config = Criterion::default().sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(8));
+    targets = large
+}
+criterion_main!(small, big);

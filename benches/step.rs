@@ -39,39 +39,93 @@ fn chunked<S>(iters: u64, mut make: impl FnMut() -> S, mut step: impl FnMut(&mut
 
 /// The layout's step while the graph moves; asserts it does move.
 fn persistent(c: &mut Criterion, name: &str, config: RapierLayoutConfig, label: &str) {
-    let scene = scene(name);
+    persistent_from(c, name, scene(name), config, label);
+}
+
+/// `scene` with the positions a default layout reaches after `frames` frames: the
+/// random scenes start as a uniform scatter whose long edges collapse it for seconds, a
+/// transient no canvas user looks at twice. Large scenes are timed from there.
+fn relaxed(name: &str, frames: usize) -> graph_canvas_layout::CanvasSceneInput<u32> {
+    let mut host = Host::new(scene(name), RapierLayoutConfig::default());
+    for _ in 0..frames {
+        host.frame();
+    }
+    host.scene
+}
+
+fn persistent_from(
+    c: &mut Criterion,
+    name: &str,
+    scene: graph_canvas_layout::CanvasSceneInput<u32>,
+    config: RapierLayoutConfig,
+    label: &str,
+) {
     let probe = {
         let mut host = Host::new(scene.clone(), config.clone());
         (0..WARM).map(|_| host.frame().len()).last().unwrap_or(0)
     };
-    assert!(probe > 0, "{name}: nothing moves after {WARM} frames, the benchmark would time a resting world");
+    assert!(
+        probe > 0,
+        "{name}: nothing moves after {WARM} frames, the benchmark would time a resting world"
+    );
     c.bench_function(&format!("step/{name}/{label}"), |b| {
-        b.iter_custom(|iters| chunked(iters, || Host::new(scene.clone(), config.clone()), |h| {
-            black_box(h.frame());
-        }))
+        b.iter_custom(|iters| {
+            chunked(
+                iters,
+                || Host::new(scene.clone(), config.clone()),
+                |h| {
+                    black_box(h.frame());
+                },
+            )
+        })
     });
 }
 
 fn bare(c: &mut Criterion, name: &str, model: BareModel, label: &str) {
-    let scene = scene(name);
+    bare_from(c, name, &scene(name), model, label);
+}
+
+fn bare_from(
+    c: &mut Criterion,
+    name: &str,
+    scene: &graph_canvas_layout::CanvasSceneInput<u32>,
+    model: BareModel,
+    label: &str,
+) {
     c.bench_function(&format!("step/{name}/{label}"), |b| {
-        b.iter_custom(|iters| chunked(iters, || Bare::new(&scene, model), |w| w.step()))
+        b.iter_custom(|iters| chunked(iters, || Bare::new(scene, model), |w| w.step()))
     });
 }
 
+/// The plan's first revision, a fresh world every frame, timed on the same states the
+/// persistent layout passes through: the host positions of frames `WARM..WARM + CHUNK`
+/// of a persistent run are replayed, each into a new layout that builds and steps once.
 fn rebuild_per_step(c: &mut Criterion, name: &str) {
-    let scene = scene(name);
+    let mut host = Host::new(scene(name), RapierLayoutConfig::default());
+    for _ in 0..WARM {
+        host.frame();
+    }
+    let states: Vec<_> = (0..CHUNK)
+        .map(|_| {
+            let s = host.scene.clone();
+            host.frame();
+            s
+        })
+        .collect();
+    let mut i = 0;
     c.bench_function(&format!("step/{name}/rebuild_per_step"), |b| {
-        b.iter_custom(|iters| {
-            chunked(
-                iters,
-                || Host::new(scene.clone(), RapierLayoutConfig::default()),
-                |h| {
-                    // The plan's first revision: a fresh world every frame.
-                    h.layout = graph_canvas_layout::RapierLayout::new(RapierLayoutConfig::default());
-                    black_box(h.frame());
-                },
-            )
+        b.iter(|| {
+            let mut layout = graph_canvas_layout::RapierLayout::new(RapierLayoutConfig::default());
+            let deltas = layout.step(
+                &states[i],
+                &mut Default::default(),
+                FRAME,
+                &Default::default(),
+                &Default::default(),
+            );
+            assert!(!deltas.is_empty(), "frame {i} of {name} did not move");
+            i = (i + 1) % states.len();
+            deltas
         })
     });
 }
@@ -85,12 +139,16 @@ fn asleep(c: &mut Criterion, name: &str) {
         frames += 1;
         assert!(frames < 20_000, "{name} did not converge in 20,000 frames");
     }
-    c.bench_function(&format!("step/{name}/asleep"), |b| b.iter(|| black_box(host.frame())));
+    c.bench_function(&format!("step/{name}/asleep"), |b| {
+        b.iter(|| black_box(host.frame()))
+    });
     let mut bare_world = Bare::new(&host.scene, BareModel::Layout);
     for _ in 0..2000 {
         bare_world.step();
     }
-    c.bench_function(&format!("step/{name}/rapier_floor_asleep"), |b| b.iter(|| bare_world.step()));
+    c.bench_function(&format!("step/{name}/rapier_floor_asleep"), |b| {
+        b.iter(|| bare_world.step())
+    });
 }
 
 fn topology_check(c: &mut Criterion) {
@@ -99,7 +157,11 @@ fn topology_check(c: &mut Criterion) {
     host.frame();
     let extras = host.extras.clone();
     c.bench_function("topology_check/n200_e500", |b| {
-        b.iter(|| assert!(!host.layout.topology_changed(black_box(&host.scene), &extras)))
+        b.iter(|| {
+            assert!(!host
+                .layout
+                .topology_changed(black_box(&host.scene), &extras))
+        })
     });
     let mut shuffled = scene.clone();
     shuffled.nodes.reverse();
@@ -122,14 +184,27 @@ fn headline(c: &mut Criterion) {
 }
 
 fn presets(c: &mut Criterion) {
-    for (label, accuracy) in [("fast", Accuracy::Fast), ("balanced", Accuracy::Balanced), ("precise", Accuracy::Precise)] {
-        let config = RapierLayoutConfig { accuracy, ..Default::default() };
+    for (label, accuracy) in [
+        ("fast", Accuracy::Fast),
+        ("balanced", Accuracy::Balanced),
+        ("precise", Accuracy::Precise),
+    ] {
+        let config = RapierLayoutConfig {
+            accuracy,
+            ..Default::default()
+        };
         persistent(c, "n200_e500", config, &format!("persistent_{label}"));
     }
 }
 
 fn scaling(c: &mut Criterion) {
-    for name in ["n1000_e2500", "tree_1023", "grid_30x30", "star_2001", "ba_n2000"] {
+    for name in [
+        "n1000_e2500",
+        "tree_1023",
+        "grid_30x30",
+        "star_2001",
+        "ba_n2000",
+    ] {
         persistent(c, name, RapierLayoutConfig::default(), "persistent");
     }
     rebuild_per_step(c, "n1000_e2500");
@@ -137,10 +212,21 @@ fn scaling(c: &mut Criterion) {
 
 fn large(c: &mut Criterion) {
     for name in ["n5000_e12500", "n10000_e25000"] {
-        persistent(c, name, RapierLayoutConfig::default(), "persistent");
-        let fast = RapierLayoutConfig { accuracy: Accuracy::Fast, ..Default::default() };
-        persistent(c, name, fast, "persistent_fast");
-        bare(c, name, BareModel::Plan, "plan_model_floor");
+        let start = relaxed(name, 300);
+        persistent_from(
+            c,
+            name,
+            start.clone(),
+            RapierLayoutConfig::default(),
+            "persistent",
+        );
+        let fast = RapierLayoutConfig {
+            accuracy: Accuracy::Fast,
+            ..Default::default()
+        };
+        persistent_from(c, name, start.clone(), fast, "persistent_fast");
+        bare_from(c, name, &start, BareModel::Layout, "rapier_floor");
+        bare_from(c, name, &start, BareModel::Plan, "plan_model_floor");
     }
 }
 

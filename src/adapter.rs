@@ -210,13 +210,19 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// scene.nodes.push(CanvasNode::new(2, Point2D::new(50.0, 0.0)));
     /// assert!(layout.topology_changed(&scene, &extras));
     /// ```
-    pub fn topology_changed(&mut self, scene: &CanvasSceneInput<N>, extras: &LayoutExtras<N>) -> bool {
+    pub fn topology_changed(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+    ) -> bool {
         let nodes_changed = self.match_nodes(scene, extras);
         if !nodes_changed && self.topology_hash != 0 && self.edges_match_cache(scene) {
             return false;
         }
         let world = self.world.as_ref();
-        let topology = Topology::of(scene, extras, |id| world.is_some_and(|w| w.contains_node(id)));
+        let topology = Topology::of(scene, extras, |id| {
+            world.is_some_and(|w| w.contains_node(id))
+        });
         topology.hash != self.topology_hash
     }
 
@@ -825,7 +831,12 @@ fn moved_by_host(body: Point2D<f32>, host: Point2D<f32>) -> bool {
     if gap_sq <= FLOOR * FLOOR {
         return false;
     }
-    let magnitude = body.x.abs().max(body.y.abs()).max(host.x.abs()).max(host.y.abs());
+    let magnitude = body
+        .x
+        .abs()
+        .max(body.y.abs())
+        .max(host.x.abs())
+        .max(host.y.abs());
     let tolerance = FLOOR.max(magnitude * 8.0 * f32::EPSILON);
     gap_sq > tolerance * tolerance
 }

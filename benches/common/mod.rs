@@ -16,7 +16,9 @@ pub const FRAME: f32 = 1.0 / 60.0;
 pub fn scene(name: &str) -> CanvasSceneInput<u32> {
     let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    serde_json::from_str::<SceneFile>(&text).unwrap_or_else(|e| panic!("{path}: {e}")).into_scene()
+    serde_json::from_str::<SceneFile>(&text)
+        .unwrap_or_else(|e| panic!("{path}: {e}"))
+        .into_scene()
 }
 
 /// A host canvas: owns the positions and adds the deltas, as a real one would.
@@ -29,11 +31,22 @@ pub struct Host {
 
 impl Host {
     pub fn new(scene: CanvasSceneInput<u32>, config: RapierLayoutConfig) -> Self {
-        Self { scene, layout: RapierLayout::new(config), state: RapierLayoutState::default(), extras: LayoutExtras::default() }
+        Self {
+            scene,
+            layout: RapierLayout::new(config),
+            state: RapierLayoutState::default(),
+            extras: LayoutExtras::default(),
+        }
     }
 
     pub fn frame(&mut self) -> DeltaMap<u32> {
-        let deltas = self.layout.step(&self.scene, &mut self.state, FRAME, &CanvasViewport::default(), &self.extras);
+        let deltas = self.layout.step(
+            &self.scene,
+            &mut self.state,
+            FRAME,
+            &CanvasViewport::default(),
+            &self.extras,
+        );
         apply(&mut self.scene, &deltas);
         deltas
     }
@@ -88,7 +101,11 @@ impl Bare {
         let mut handles = Vec::new();
         let m = config.material;
         for n in &scene.nodes {
-            let r = if n.radius > 0.0 { n.radius } else { config.default_radius };
+            let r = if n.radius > 0.0 {
+                n.radius
+            } else {
+                config.default_radius
+            };
             let mass = m.density * std::f32::consts::PI * r * r;
             let mut body = RigidBodyBuilder::dynamic()
                 .translation(Vector::new(n.position.x, n.position.y))
@@ -100,7 +117,9 @@ impl Bare {
                     collider = collider.density(0.0);
                 }
                 BareModel::Plan => {
-                    collider = collider.density(m.density).active_events(ActiveEvents::COLLISION_EVENTS);
+                    collider = collider
+                        .density(m.density)
+                        .active_events(ActiveEvents::COLLISION_EVENTS);
                 }
             }
             let (h, _) = world.insert(body, collider);
@@ -113,13 +132,20 @@ impl Bare {
             if e.source == e.target || !seen.insert(key) {
                 continue;
             }
-            let joint = SpringJointBuilder::new(100.0, 50.0, 1.0).spring_model(MotorModel::ForceBased);
+            let joint =
+                SpringJointBuilder::new(100.0, 50.0, 1.0).spring_model(MotorModel::ForceBased);
             world.insert_impulse_joint(index[&e.source], index[&e.target], joint);
         }
         let (cs, cr) = std::sync::mpsc::channel();
         let (fs, fr) = std::sync::mpsc::channel();
         let (ts, tr) = std::sync::mpsc::channel();
-        Self { world, handles, model, collector: ChannelEventCollector::new(cs, fs, ts), _receivers: (cr, fr, tr) }
+        Self {
+            world,
+            handles,
+            model,
+            collector: ChannelEventCollector::new(cs, fs, ts),
+            _receivers: (cr, fr, tr),
+        }
     }
 
     pub fn step(&mut self) {

@@ -20,6 +20,7 @@ use crate::bindings::{ColliderSpec, NodeAvatarBinding, SceneBodyKind};
 use crate::config::{BodyKindPolicy, RapierLayoutConfig, TopologyUpdate};
 use crate::events::SceneEvent;
 use crate::layout::{DeltaMap, IdHasher, Layout, LayoutExtras};
+use crate::repulsion::ManyBody;
 use crate::scene::{CanvasNode, CanvasSceneInput, CanvasViewport};
 use crate::timestep::{StepPlan, DEFAULT_TIMESTEP};
 use crate::topology::Topology;
@@ -116,6 +117,8 @@ pub struct RapierLayout<N> {
     drives: Vec<Drive>,
     calm_time: f32,
     converged: bool,
+    many_body: ManyBody,
+    points: Vec<Point2D<f32>>,
     /// This call's fixed timestep; new joints are tuned for it.
     fixed_dt: f32,
 }
@@ -163,6 +166,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             drives: Vec::new(),
             calm_time: 0.0,
             converged: false,
+            many_body: ManyBody::default(),
+            points: Vec::new(),
             fixed_dt: DEFAULT_TIMESTEP,
         }
     }
@@ -359,6 +364,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             || applied.collisions != self.config.collisions
             || applied.contact_events != self.config.contact_events
             || applied.default_radius.to_bits() != self.config.default_radius.to_bits();
+        if applied.repulsion.is_some() && self.config.repulsion.is_none() {
+            // Forces stay on bodies until reset: drop the last repulsion.
+            if let Some(world) = self.world.as_mut() {
+                world.reset_forces();
+            }
+        }
         if structural {
             self.world = None;
             self.topology_hash = 0;
@@ -747,6 +758,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                         .set_next_kinematic_translation(Vector::new(target.x, target.y));
                 }
             }
+            if let Some(repulsion) = config.repulsion {
+                apply_repulsion(world, &mut self.many_body, &mut self.points, &repulsion);
+            }
             world.step(gravity);
         }
     }
@@ -789,6 +803,43 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.calm_time += simulated;
         }
         self.converged = self.calm_time >= REST_TIME;
+    }
+}
+
+/// Sets every awake dynamic body's force to its many-body repulsion plus centre pull.
+/// Every body (pinned and dragged ones too) pushes; only dynamic bodies are pushed.
+/// Skipped while nothing is awake, so a resting layout stays cheap.
+fn apply_repulsion<N: Clone + Eq + Hash>(
+    world: &mut RapierSceneWorld<N>,
+    tree: &mut ManyBody,
+    points: &mut Vec<Point2D<f32>>,
+    repulsion: &crate::repulsion::Repulsion,
+) {
+    if world.awake_body_count() == 0 {
+        return;
+    }
+    points.clear();
+    points.extend((0..world.slots.len()).map(|s| world.position_at(s)));
+    tree.build(points);
+    let strength = finite_or(repulsion.strength, 0.0);
+    let theta = finite_or(repulsion.theta, 0.0).max(0.0);
+    let min_distance = finite_or(repulsion.min_distance, 1.0).max(1e-3);
+    let pull = finite_or(repulsion.center_pull, 0.0);
+    let center = repulsion.center;
+    for (s, &point) in points.iter().enumerate() {
+        let body = world.body_at(s);
+        if !body.is_dynamic() || body.is_sleeping() {
+            continue;
+        }
+        let mut f = tree.force_on(s, strength, theta, min_distance);
+        if center.x.is_finite() && center.y.is_finite() {
+            f -= (point - center) * pull;
+        }
+        if f.is_finite() {
+            let body = world.body_at_mut(s);
+            body.reset_forces(false);
+            body.add_force(Vector::new(f.x, f.y), false);
+        }
     }
 }
 

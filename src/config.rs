@@ -4,6 +4,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::bindings::{EdgeJointSpec, PhysicsMaterial};
+use crate::repulsion::Repulsion;
 
 /// What each edge becomes in the physics world.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -195,6 +196,11 @@ pub struct RapierLayoutConfig {
     /// [`Layout::is_converged`](crate::Layout::is_converged) reports rest when no
     /// dynamic body is faster. Default: `5.0`.
     pub rest_speed: f32,
+    /// Many-body repulsion (Barnes–Hut) and centre pull, or `None` for springs and
+    /// contacts only. Costs one quadtree build and one O(n log n) force pass per substep
+    /// while anything is awake. Default: `None` ([`RapierLayoutConfig::force_directed`]
+    /// turns it on).
+    pub repulsion: Option<Repulsion>,
     /// Displacements shorter than this (world units) are left out of the returned map;
     /// they stay owed to the host and are reported once they add up. Default: `1e-4`.
     pub delta_epsilon: f32,
@@ -217,6 +223,36 @@ impl Default for RapierLayoutConfig {
             accuracy: Accuracy::Balanced,
             rest_speed: 5.0,
             delta_epsilon: 1e-4,
+            repulsion: None,
+        }
+    }
+}
+
+impl RapierLayoutConfig {
+    /// A configuration for laying graphs out, comparable to d3-force's defaults: springs
+    /// of rest length 100, many-body repulsion with a gentle centre pull, colliding
+    /// disks, and enough damping to come to rest in a few seconds.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::RapierLayoutConfig;
+    /// let config = RapierLayoutConfig::force_directed();
+    /// assert!(config.repulsion.is_some());
+    /// ```
+    pub fn force_directed() -> Self {
+        let defaults = Self::default();
+        Self {
+            edge_joint: EdgeJoint::Spring {
+                rest_length: 100.0,
+                stiffness: 50.0,
+                damping: 1.0,
+            },
+            material: PhysicsMaterial {
+                linear_damping: 3.0,
+                ..defaults.material
+            },
+            repulsion: Some(Repulsion::default()),
+            ..defaults
         }
     }
 }

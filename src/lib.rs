@@ -75,6 +75,8 @@ mod config;
 mod events;
 mod joints;
 mod layout;
+pub mod quality;
+mod repulsion;
 mod scene;
 mod scene_file;
 mod timestep;
@@ -93,6 +95,7 @@ pub use config::{Accuracy, BodyKindPolicy, EdgeJoint, RapierLayoutConfig, Topolo
 pub use events::SceneEvent;
 pub use joints::max_resolved_stiffness;
 pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeSet};
+pub use repulsion::{ManyBody, Repulsion};
 pub use scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
 pub use scene_file::{SceneFile, SceneFileNode};
 pub use timestep::{StepPlan, DEFAULT_TIMESTEP};

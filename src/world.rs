@@ -822,6 +822,18 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         self.topology_hash = hash;
     }
 
+    /// Clears the forces added to every body (they persist across steps until cleared).
+    pub fn reset_forces(&mut self) {
+        for slot in 0..self.slots.len() {
+            self.body_at_mut(slot).reset_forces(true);
+        }
+    }
+
+    /// Number of bodies rapier is simulating (awake dynamic and kinematic ones). O(1).
+    pub fn awake_body_count(&self) -> usize {
+        self.islands.num_active_bodies()
+    }
+
     /// Number of dynamic bodies that are awake.
     pub fn awake_dynamic_count(&self) -> usize {
         self.bodies

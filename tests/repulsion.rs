@@ -1,0 +1,123 @@
+//! Many-body repulsion: the Barnes–Hut sum matches the exact one, and a force-directed
+//! layout spreads a graph that springs alone pack into a blob.
+
+mod common;
+
+use common::*;
+use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
+use graph_canvas_layout::{
+    quality, CanvasSceneInput, Layout, ManyBody, RapierLayoutConfig, Repulsion,
+};
+
+fn scene_points(name: &str) -> Vec<Point2D<f32>> {
+    load_scene(name).nodes.iter().map(|n| n.position).collect()
+}
+
+fn brute_force(points: &[Point2D<f32>], i: usize, r: &Repulsion) -> Vector2D<f32> {
+    let mut f = Vector2D::zero();
+    for (j, q) in points.iter().enumerate() {
+        let d = points[i] - *q;
+        if j != i && d.square_length() > 0.0 {
+            f += d * (r.strength / d.square_length().max(r.min_distance * r.min_distance));
+        }
+    }
+    f
+}
+
+#[test]
+fn theta_zero_is_the_exact_sum() {
+    let points = scene_points("n200_e500");
+    let r = Repulsion::default();
+    let mut tree = ManyBody::default();
+    tree.build(&points);
+    for i in 0..points.len() {
+        let exact = brute_force(&points, i, &r);
+        let bh = tree.force_on(i, r.strength, 0.0, r.min_distance);
+        // Only the summation order differs: f32 rounding over 199 terms.
+        let err = (bh - exact).length() / exact.length();
+        assert!(
+            err < 1e-4,
+            "node {i}: exact {exact:?} vs theta 0 {bh:?} ({err:e})"
+        );
+    }
+}
+
+#[test]
+fn default_theta_stays_within_a_few_percent() {
+    let points = scene_points("n1000_e2500");
+    let r = Repulsion::default();
+    let mut tree = ManyBody::default();
+    tree.build(&points);
+    let mut total = 0.0;
+    for i in 0..points.len() {
+        let exact = brute_force(&points, i, &r);
+        total += (tree.force_on(i, r.strength, r.theta, r.min_distance) - exact).length()
+            / exact.length();
+    }
+    let mean = total / points.len() as f32;
+    assert!(
+        mean < 0.03,
+        "mean relative error {mean} at theta {}",
+        r.theta
+    );
+}
+
+#[test]
+fn coincident_points_build_and_push_finitely() {
+    let points = vec![Point2D::new(5.0, 5.0); 40];
+    let mut tree = ManyBody::default();
+    tree.build(&points);
+    let f = tree.force_on(3, 1000.0, 0.9, 1.0);
+    assert_eq!(
+        f,
+        Vector2D::zero(),
+        "coincident points have no direction to push along"
+    );
+}
+
+#[test]
+fn repulsion_spreads_what_springs_alone_pack() {
+    let run = |config: RapierLayoutConfig| {
+        let mut host = Host::new(load_scene("les_miserables"), config);
+        for _ in 0..3000 {
+            host.frame(FRAME);
+            if host.layout.is_converged(&host.state) {
+                break;
+            }
+        }
+        host.scene
+    };
+    let plain = run(RapierLayoutConfig::default());
+    let spread = run(RapierLayoutConfig::force_directed());
+    let overlaps = quality::overlapping_pairs(&spread, 16.0, 0.5);
+    assert_eq!(
+        overlaps, 0,
+        "force-directed les_miserables has {overlaps} overlapping pairs"
+    );
+    let crossings = (
+        quality::edge_crossings(&plain),
+        quality::edge_crossings(&spread),
+    );
+    assert!(
+        crossings.1 * 2 < crossings.0,
+        "repulsion did not halve the crossings: {crossings:?}"
+    );
+}
+
+#[test]
+fn pinned_nodes_push_but_are_not_pushed() {
+    let scene = CanvasSceneInput::new(vec![node(0_u32, 0.0, 0.0), node(1, 60.0, 0.0)], vec![]);
+    let mut host = Host::new(scene, RapierLayoutConfig::force_directed());
+    host.extras.pinned.insert(0);
+    host.frames(60);
+    assert_eq!(
+        host.pos(&0),
+        Point2D::new(0.0, 0.0),
+        "the pinned node moved"
+    );
+    assert!(
+        host.pos(&1).x > 100.0,
+        "the free node was not pushed away: {:?}",
+        host.pos(&1)
+    );
+}

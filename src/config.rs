@@ -245,10 +245,10 @@ impl RapierLayoutConfig {
             edge_joint: EdgeJoint::Spring {
                 rest_length: 100.0,
                 stiffness: 50.0,
-                damping: 1.0,
+                damping: 2.0,
             },
             material: PhysicsMaterial {
-                linear_damping: 3.0,
+                linear_damping: 2.0,
                 ..defaults.material
             },
             repulsion: Some(Repulsion::default()),

@@ -15,7 +15,7 @@ use serde::{Deserialize, Serialize};
 pub struct Repulsion {
     /// Force between two nodes `d` apart is `strength / d` (force × length). Larger
     /// values spread the graph out; springs balance it at the edge length where
-    /// `stiffness × stretch = strength × neighbours / length`. Default: `60_000.0`.
+    /// `stiffness × stretch = strength × neighbours / length`. Default: `40_000.0`.
     pub strength: f32,
     /// Barnes–Hut opening ratio: a cell of width `w` at distance `d` counts as one body
     /// when `w / d < theta`. 0 is the exact sum; larger is cheaper and coarser (see the
@@ -34,7 +34,7 @@ pub struct Repulsion {
 impl Default for Repulsion {
     fn default() -> Self {
         Self {
-            strength: 60_000.0,
+            strength: 40_000.0,
             theta: 0.9,
             min_distance: 8.0,
             center_pull: 0.5,

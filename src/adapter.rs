@@ -114,11 +114,14 @@ pub struct RapierLayout<N> {
     /// while the host passes the same edges.
     cached_edges: Vec<(N, N)>,
     matches: Vec<NodeMatch>,
+    /// Last pass's matches, kept to reuse slots and the buffer.
+    previous_matches: Vec<NodeMatch>,
     drives: Vec<Drive>,
     calm_time: f32,
     converged: bool,
     many_body: ManyBody,
     points: Vec<Point2D<f32>>,
+    recovered: Vec<N>,
     /// This call's fixed timestep; new joints are tuned for it.
     fixed_dt: f32,
 }
@@ -163,11 +166,13 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             applied: None,
             cached_edges: Vec::new(),
             matches: Vec::new(),
+            previous_matches: Vec::new(),
             drives: Vec::new(),
             calm_time: 0.0,
             converged: false,
             many_body: ManyBody::default(),
             points: Vec::new(),
+            recovered: Vec::new(),
             fixed_dt: DEFAULT_TIMESTEP,
         }
     }
@@ -229,6 +234,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             world.is_some_and(|w| w.contains_node(id))
         });
         topology.hash != self.topology_hash
+    }
+
+    /// Nodes whose bodies went non-finite during the last call (rapier quarantined
+    /// them) and were put back, at rest, where they last were valid.
+    pub fn recovered_nodes(&self) -> &[N] {
+        &self.recovered
     }
 
     /// Drains the contact events recorded since the last call (empty unless
@@ -310,20 +321,24 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         dt: f32,
         extras: &LayoutExtras<N>,
     ) -> DeltaMap<N> {
-        state.step_count += 1;
+        state.step_count = state.step_count.wrapping_add(1);
         if scene.nodes.is_empty() {
             self.drop_world();
             return DeltaMap::default();
         }
         let (_, _, substeps) = self.config.accuracy.settings();
+        let mut plan = StepPlan::new(
+            dt,
+            state.dt,
+            self.config.max_frame_time,
+            self.config.max_substeps,
+        );
+        // Accuracy presets split every step further; an unusable `dt` is still one whole
+        // fixed step.
+        plan.substeps = plan.substeps.saturating_mul(substeps);
+        plan.substep_dt /= substeps as f32;
         // New joints are tuned for the longest substep this configuration takes.
         self.fixed_dt = sanitized_timestep(state.dt) / substeps as f32;
-        let plan = StepPlan::new(
-            dt,
-            self.fixed_dt,
-            self.config.max_frame_time,
-            self.config.max_substeps.saturating_mul(substeps),
-        );
         self.apply_config_changes();
         let mut disturbed = self.sync_topology(scene, extras);
         disturbed |= self.sync_in(scene, extras, plan.frame_dt);
@@ -332,6 +347,10 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             finite_or(state.gravity_y, 0.0),
         );
         self.simulate(&plan, gravity);
+        self.recovered.clear();
+        if let Some(world) = self.world.as_mut() {
+            self.recovered.extend(world.take_recovered_nodes());
+        }
         state.simulated_time += f64::from(plan.simulated());
         let (deltas, max_speed) = self.sync_out(scene);
         self.track_rest(
@@ -384,11 +403,18 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.applied = Some(self.config.clone());
     }
 
+    /// The node's radius, or the configured default for 0 (an unusable default counts
+    /// as 16), as the world stores it: finite and non-negative.
     fn radius_of(&self, node: &CanvasNode<N>) -> f32 {
-        if node.radius > 0.0 {
+        if node.radius > 0.0 && node.radius.is_finite() {
             node.radius
         } else {
-            self.config.default_radius
+            let default = self.config.default_radius;
+            if default.is_finite() && default >= 0.0 {
+                default
+            } else {
+                16.0
+            }
         }
     }
 
@@ -415,8 +441,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let check_pins = !extras.pinned.is_empty();
         let mut changed = false;
         let mut seen = 0;
-        let previous = std::mem::take(&mut self.matches);
-        self.matches.reserve(scene.nodes.len());
+        std::mem::swap(&mut self.matches, &mut self.previous_matches);
+        self.matches.clear();
+        let previous = &self.previous_matches;
         for (i, node) in scene.nodes.iter().enumerate() {
             let valid = node_is_valid(node);
             let pinned = check_pins && extras.pinned.contains(&node.id);
@@ -520,6 +547,17 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             };
             world.insert_node(&self.binding_for(node), spread.place(position));
             world.rebase_initial_position(&node.id, position);
+            // A drag in progress survives the rebuild, so its release still throws.
+            let old = self
+                .world
+                .as_ref()
+                .and_then(|w| Some(&w.slots[w.slot_of(&node.id)?]));
+            if let (Some(old), Some(s)) = (old, world.slot_of(&node.id)) {
+                let slot = &mut world.slots[s];
+                slot.dragging = old.dragging;
+                slot.drag_position = old.drag_position;
+                slot.drag_velocity = old.drag_velocity;
+            }
         }
         for &(a, b) in &topology.edges {
             world.insert_edge_joint(
@@ -614,6 +652,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         frame_dt: f32,
     ) -> bool {
         self.drives.clear();
+        let max_speed = self.config.max_speed;
         let check_drags = !extras.dragging.is_empty();
         let mut disturbed = false;
         for (i, node) in scene.nodes.iter().enumerate() {
@@ -673,7 +712,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                         }
                         body.set_linvel(Vector::new(velocity.x, velocity.y), true);
                         disturbed = true;
-                    } else if !world.slots[s].fresh && moved_by_host(body_pos, host) {
+                    } else if !world.slots[s].fresh && moved_by_host(world.slots[s].told, host) {
                         let body = world.body_at_mut(s);
                         body.set_translation(Vector::new(host.x, host.y), true);
                         body.set_linvel(Vector::ZERO, true);
@@ -708,9 +747,11 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             slot.fresh = false;
             slot.pinned = m.pinned;
             slot.initial = host;
+            slot.told = host;
             if dragging {
-                slot.drag_velocity = if was_dragging {
-                    (host - slot.drag_position) / frame_dt
+                let velocity = (host - slot.drag_position) / frame_dt;
+                slot.drag_velocity = if was_dragging && velocity.is_finite() {
+                    clamp_speed(velocity, max_speed)
                 } else {
                     Vector2D::zero()
                 };
@@ -748,10 +789,11 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             if !self.drives.is_empty() {
                 let t = (k + 1) as f32 / plan.substeps as f32;
                 for drive in &self.drives {
-                    let target = if k + 1 == plan.substeps {
+                    let between = drive.from.lerp(drive.to, t);
+                    let target = if k + 1 == plan.substeps || !between.is_finite() {
                         drive.to
                     } else {
-                        drive.from.lerp(drive.to, t)
+                        between
                     };
                     world
                         .body_at_mut(drive.slot as usize)
@@ -771,7 +813,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let epsilon_sq = epsilon * epsilon;
         let mut deltas = DeltaMap::with_capacity_and_hasher(scene.nodes.len(), IdHasher::default());
         let mut max_speed_sq: f32 = 0.0;
-        let Some(world) = self.world.as_ref() else {
+        let Some(world) = self.world.as_mut() else {
             return (deltas, 0.0);
         };
         for (node, m) in scene.nodes.iter().zip(&self.matches) {
@@ -787,8 +829,11 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 max_speed_sq = max_speed_sq.max(body.linvel().length_squared());
             }
             let t = body.translation();
-            let delta = Point2D::new(t.x, t.y) - world.slots[s].initial;
+            let slot = &mut world.slots[s];
+            let delta = Point2D::new(t.x, t.y) - slot.initial;
             if delta.square_length() > epsilon_sq && delta.is_finite() {
+                // The host adds the delta with the same f32 addition.
+                slot.told = slot.initial + delta;
                 deltas.insert(node.id.clone(), delta);
             }
         }
@@ -803,6 +848,16 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.calm_time += simulated;
         }
         self.converged = self.calm_time >= REST_TIME;
+    }
+}
+
+/// `v` shortened to `max_speed` (no cap when `max_speed` is not positive).
+fn clamp_speed(v: Vector2D<f32>, max_speed: f32) -> Vector2D<f32> {
+    let speed = v.length();
+    if max_speed > 0.0 && speed > max_speed && speed.is_finite() {
+        v * (max_speed / speed)
+    } else {
+        v
     }
 }
 
@@ -874,20 +929,21 @@ impl CoincidenceSpreader {
     }
 }
 
-/// Whether the host moved a free node: its position differs from its body's by more
-/// than float noise at that magnitude (deltas below the report threshold included).
-fn moved_by_host(body: Point2D<f32>, host: Point2D<f32>) -> bool {
-    const FLOOR: f32 = 0.01;
-    let gap_sq = (body - host).square_length();
-    if gap_sq <= FLOOR * FLOOR {
+/// Whether the host moved a free node: its position differs from the one it was told
+/// (its last position plus the last delta) by more than float noise at that magnitude.
+/// A host that adds deltas with `+=` lands on it bit for bit; any edit, however small,
+/// is honoured.
+fn moved_by_host(told: Point2D<f32>, host: Point2D<f32>) -> bool {
+    let gap_sq = (told - host).square_length();
+    if gap_sq == 0.0 {
         return false;
     }
-    let magnitude = body
+    let magnitude = told
         .x
         .abs()
-        .max(body.y.abs())
+        .max(told.y.abs())
         .max(host.x.abs())
         .max(host.y.abs());
-    let tolerance = FLOOR.max(magnitude * 8.0 * f32::EPSILON);
+    let tolerance = (magnitude * 4.0 * f32::EPSILON).max(f32::MIN_POSITIVE);
     gap_sq > tolerance * tolerance
 }

@@ -98,7 +98,7 @@ pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeSet};
 pub use repulsion::{ManyBody, Repulsion};
 pub use scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
 pub use scene_file::{SceneFile, SceneFileNode};
-pub use timestep::{StepPlan, DEFAULT_TIMESTEP};
+pub use timestep::{StepPlan, DEFAULT_TIMESTEP, MIN_TIMESTEP};
 pub use topology::topology_hash;
 pub use validation::LayoutError;
 pub use world::{

@@ -3,6 +3,10 @@
 /// The fixed timestep used when the state's is unset (`0.0`) or unusable.
 pub const DEFAULT_TIMESTEP: f32 = 1.0 / 60.0;
 
+/// Shortest substep and frame time used, in seconds: shorter (subnormal) values would
+/// make rapier's `1 / dt` infinite.
+pub const MIN_TIMESTEP: f32 = 1.0e-9;
+
 /// How one call advances simulated time.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StepPlan {
@@ -56,7 +60,8 @@ impl StepPlan {
             0.25
         };
         let max_substeps = max_substeps.max(1);
-        let time = dt.min(cap);
+        let time = dt.min(cap).max(MIN_TIMESTEP);
+        let dt = dt.max(MIN_TIMESTEP);
         // A hair of tolerance so 0.05 s at 1/60 s is 3 substeps, not 4.
         let wanted = ((time / fixed) * (1.0 - 1e-5)).ceil().max(1.0);
         if wanted > max_substeps as f32 {

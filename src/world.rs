@@ -72,6 +72,9 @@ pub(crate) struct NodeSlot<N> {
     pub(crate) mass: f32,
     /// The anchor `read_positions` measures from.
     pub(crate) initial: Point2D<f32>,
+    /// Where the host should have the node after adding the last delta it was given:
+    /// a host position elsewhere is a host edit.
+    pub(crate) told: Point2D<f32>,
     /// Call number in which the adapter last saw this node in the scene.
     pub(crate) stamp: u64,
     pub(crate) pinned: bool,
@@ -140,7 +143,7 @@ pub struct RapierSceneWorld<N> {
     options: WorldOptions,
     collector: Option<CollisionCollector>,
     raw_events: Vec<CollisionEvent>,
-    events: Vec<SceneEvent<N>>,
+    events: std::collections::VecDeque<SceneEvent<N>>,
     dropped_events: u64,
     recovered: Vec<N>,
     topology_hash: u64,
@@ -211,7 +214,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
                 .then(CollisionCollector::default),
             options,
             raw_events: Vec::new(),
-            events: Vec::new(),
+            events: std::collections::VecDeque::new(),
             dropped_events: 0,
             recovered: Vec::new(),
             topology_hash: 0,
@@ -314,6 +317,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             shape,
             mass,
             initial: position,
+            told: position,
             stamp: 0,
             pinned: false,
             dragging: false,
@@ -556,10 +560,10 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
                 continue;
             };
             if self.events.len() >= MAX_PENDING_EVENTS {
-                self.events.remove(0);
+                self.events.pop_front();
                 self.dropped_events += 1;
             }
-            self.events.push(if event.started() {
+            self.events.push_back(if event.started() {
                 SceneEvent::ContactBegin { a, b }
             } else {
                 SceneEvent::ContactEnd { a, b }
@@ -584,7 +588,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// assert!(world.read_events().is_empty(), "drained");
     /// ```
     pub fn read_events(&mut self) -> Vec<SceneEvent<N>> {
-        std::mem::take(&mut self.events)
+        self.events.drain(..).collect()
     }
 
     /// How many events were dropped because more than [`MAX_PENDING_EVENTS`] waited.

@@ -175,6 +175,10 @@ fn a_violent_throw_flies_at_the_speed_cap() {
         "speed {} above the cap",
         v.length()
     );
+    assert!(
+        largest >= cap_per_frame * 0.99,
+        "the throw did not fly at the cap: largest frame {largest}, cap {cap_per_frame}"
+    );
 }
 
 #[test]

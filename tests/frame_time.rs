@@ -71,9 +71,26 @@ fn the_state_timestep_sets_the_substep_length() {
     let mut host = falling();
     host.state.dt = 1.0 / 240.0;
     host.frame(1.0 / 60.0);
-    let plan = StepPlan::new(1.0 / 60.0, 1.0 / 240.0, 0.25, 16);
-    assert_eq!(plan.substeps, 4);
+    let substep = host.layout.world().unwrap().integration_parameters().dt;
+    assert!(
+        (substep - 1.0 / 240.0).abs() < 1e-7,
+        "substep {substep}, expected 1/240"
+    );
     assert!((host.state.simulated_time - 1.0 / 60.0).abs() < 1e-6);
+}
+
+#[test]
+fn precise_accuracy_still_takes_one_whole_fixed_step_for_unusable_dt() {
+    let mut host = falling();
+    host.layout.config.accuracy = graph_canvas_layout::Accuracy::Precise;
+    host.frame(f32::NAN);
+    let t = host.state.simulated_time;
+    assert!(
+        (t - 1.0 / 60.0).abs() < 1e-7,
+        "simulated {t}, expected one 1/60 step in two substeps"
+    );
+    let substep = host.layout.world().unwrap().integration_parameters().dt;
+    assert!((substep - 1.0 / 120.0).abs() < 1e-7, "substep {substep}");
 }
 
 #[test]

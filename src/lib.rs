@@ -67,6 +67,27 @@
 //!
 //! **How fast can a node fly?** [`RapierLayoutConfig::max_speed`] (default 40,000 units
 //! per second) caps every body; faster throws fly at the cap.
+//!
+//! **Jitter at rest?** A resting layout reports nothing: bodies slower than
+//! [`RapierLayoutConfig::rest_speed`] (5 units/s) for 0.5 s fall asleep and stop
+//! exactly, and displacements under [`RapierLayoutConfig::delta_epsilon`] are not
+//! reported. Dense piles of disks pushed together by springs settle more slowly;
+//! [`Accuracy::Precise`] resolves their contacts in fewer frames, and
+//! [`RapierLayoutConfig::force_directed`] keeps nodes apart in the first place.
+//!
+//! **Very large coordinates?** Positions are `f32`: near 1e5 they resolve to 0.008 units,
+//! near 1e6 to 0.06, near 1e7 to 1. The layout stays finite there, but motion finer than
+//! the resolution is lost. Keep the graph within about ±1e5 of the origin (lay out in a
+//! local frame and translate on display).
+//!
+//! **Which preset?** [`Accuracy::Balanced`] (default) sits at the knee of the measured
+//! cost/error curve. [`Accuracy::Fast`] costs 0.7× on sparse graphs but is slower in
+//! dense contact piles; [`Accuracy::Precise`] costs about 6× for trajectories and
+//! spring lengths closer to a fine-timestep reference. The README's table gives the
+//! figures (`cargo run --release --example tradeoff`).
+//!
+//! **Laying a graph out from scratch?** Use [`RapierLayoutConfig::force_directed`]:
+//! springs and contacts alone pack a graph into a blob; many-body repulsion spreads it.
 #![deny(missing_docs)]
 
 mod adapter;

@@ -1,0 +1,345 @@
+//! Interactive demo: a real graph on a live `RapierLayout`.
+//!
+//! - drag a node with the left button and let go to throw it;
+//! - right-click a node to pin or unpin it;
+//! - click a node to select it, then shift-click another to add or remove the edge;
+//! - the side panel adds and removes nodes, switches presets, joints and the
+//!   force-directed configuration, and shows frame time, step time and convergence.
+//!
+//! `cargo run --release -p graph-canvas-layout-demo [scene.json] [--frames N]`
+//! (`--frames N` quits after N frames, for unattended checks).
+
+use std::time::Instant;
+
+use eframe::egui;
+use graph_canvas_layout::euclid::default::Point2D;
+use graph_canvas_layout::{
+    Accuracy, CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, EdgeJoint, Layout,
+    LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState, SceneFile,
+};
+
+struct Demo {
+    scene: CanvasSceneInput<u32>,
+    layout: RapierLayout<u32>,
+    state: RapierLayoutState,
+    extras: LayoutExtras<u32>,
+    selected: Option<u32>,
+    grabbed: Option<u32>,
+    next_id: u32,
+    last_frame: Instant,
+    frame_ms: f32,
+    step_us: f32,
+    zoom: f32,
+    pan: egui::Vec2,
+    force_directed: bool,
+    frames_left: Option<u64>,
+}
+
+impl Demo {
+    fn new(scene: CanvasSceneInput<u32>, frames_left: Option<u64>) -> Self {
+        let next_id = scene.nodes.iter().map(|n| n.id).max().map_or(0, |m| m + 1);
+        Self {
+            scene,
+            layout: RapierLayout::new(RapierLayoutConfig::force_directed()),
+            state: RapierLayoutState::default(),
+            extras: LayoutExtras::default(),
+            selected: None,
+            grabbed: None,
+            next_id,
+            last_frame: Instant::now(),
+            frame_ms: 0.0,
+            step_us: 0.0,
+            zoom: 0.45,
+            pan: egui::Vec2::ZERO,
+            force_directed: true,
+            frames_left,
+        }
+    }
+
+    fn to_screen(&self, rect: egui::Rect, p: Point2D<f32>) -> egui::Pos2 {
+        rect.center() + self.pan + egui::vec2(p.x, p.y) * self.zoom
+    }
+
+    fn to_world(&self, rect: egui::Rect, p: egui::Pos2) -> Point2D<f32> {
+        let v = (p - rect.center() - self.pan) / self.zoom;
+        Point2D::new(v.x, v.y)
+    }
+
+    fn node_at(&self, rect: egui::Rect, p: egui::Pos2) -> Option<u32> {
+        self.scene
+            .nodes
+            .iter()
+            .rev()
+            .find(|n| {
+                self.to_screen(rect, n.position).distance(p) <= n.radius.max(16.0) * self.zoom + 2.0
+            })
+            .map(|n| n.id)
+    }
+
+    fn toggle_edge(&mut self, a: u32, b: u32) {
+        let before = self.scene.edges.len();
+        self.scene
+            .edges
+            .retain(|e| !((e.source == a && e.target == b) || (e.source == b && e.target == a)));
+        if self.scene.edges.len() == before {
+            self.scene.edges.push(CanvasEdge::new(a, b));
+        }
+    }
+
+    fn side_panel(&mut self, ui: &mut egui::Ui) {
+        ui.heading("graph-canvas-layout");
+        ui.label(format!(
+            "frame {:.1} ms, step {:.0} µs",
+            self.frame_ms, self.step_us
+        ));
+        ui.label(format!(
+            "{} nodes, {} edges",
+            self.scene.nodes.len(),
+            self.scene.edges.len()
+        ));
+        let converged = self.layout.is_converged(&self.state);
+        ui.label(if converged {
+            "converged: at rest"
+        } else {
+            "converged: moving"
+        });
+        ui.label(format!(
+            "rebuilds {}, patches {}",
+            self.layout.rebuild_count(),
+            self.layout.patch_count()
+        ));
+        ui.separator();
+        if ui
+            .checkbox(&mut self.force_directed, "force-directed (repulsion)")
+            .changed()
+        {
+            let keep = (self.layout.config.accuracy, self.layout.config.edge_joint);
+            self.layout.config = if self.force_directed {
+                RapierLayoutConfig::force_directed()
+            } else {
+                RapierLayoutConfig::default()
+            };
+            (self.layout.config.accuracy, self.layout.config.edge_joint) = keep;
+        }
+        ui.label("accuracy");
+        for (name, accuracy) in [
+            ("Fast", Accuracy::Fast),
+            ("Balanced", Accuracy::Balanced),
+            ("Precise", Accuracy::Precise),
+        ] {
+            ui.radio_value(&mut self.layout.config.accuracy, accuracy, name);
+        }
+        ui.label("edge joint");
+        let joints = [
+            (
+                "Spring",
+                EdgeJoint::Spring {
+                    rest_length: 100.0,
+                    stiffness: 50.0,
+                    damping: 2.0,
+                },
+            ),
+            (
+                "Rope",
+                EdgeJoint::Rope {
+                    max_length: 120.0,
+                    stiffness: 1e4,
+                },
+            ),
+            ("Distance", EdgeJoint::Distance { length: 100.0 }),
+            ("None", EdgeJoint::None),
+        ];
+        for (name, joint) in joints {
+            ui.radio_value(&mut self.layout.config.edge_joint, joint, name);
+        }
+        ui.separator();
+        if ui.button("add node").clicked() {
+            let id = self.next_id;
+            self.next_id += 1;
+            let anchor = self
+                .selected
+                .and_then(|s| self.scene.nodes.iter().find(|n| n.id == s))
+                .map(|n| n.position);
+            let at = anchor.unwrap_or_default()
+                + graph_canvas_layout::euclid::default::Vector2D::new(40.0, 10.0);
+            self.scene
+                .nodes
+                .push(CanvasNode::new(id, at).with_radius(16.0));
+            if let Some(s) = self.selected {
+                self.scene.edges.push(CanvasEdge::new(s, id));
+            }
+            self.selected = Some(id);
+        }
+        if ui
+            .add_enabled(
+                self.selected.is_some(),
+                egui::Button::new("remove selected"),
+            )
+            .clicked()
+        {
+            if let Some(s) = self.selected.take() {
+                self.scene.nodes.retain(|n| n.id != s);
+                self.scene.edges.retain(|e| e.source != s && e.target != s);
+                self.extras.pinned.remove(&s);
+            }
+        }
+        ui.separator();
+        ui.label("drag: move and throw\nright-click: pin / unpin\nclick, then shift-click: add or remove an edge\nscroll: zoom, middle-drag: pan");
+    }
+
+    fn canvas(&mut self, ui: &mut egui::Ui) {
+        let (response, painter) =
+            ui.allocate_painter(ui.available_size(), egui::Sense::click_and_drag());
+        let rect = response.rect;
+        painter.rect_filled(rect, 0.0, egui::Color32::from_rgb(250, 250, 248));
+        let scroll = ui.input(|i| i.smooth_scroll_delta.y);
+        if response.hovered() && scroll != 0.0 {
+            self.zoom = (self.zoom * (1.0 + scroll * 0.002)).clamp(0.05, 5.0);
+        }
+        if response.dragged_by(egui::PointerButton::Middle) {
+            self.pan += response.drag_delta();
+        }
+        let pointer = response.interact_pointer_pos().or(response.hover_pos());
+        if response.drag_started_by(egui::PointerButton::Primary) {
+            self.grabbed = pointer.and_then(|p| self.node_at(rect, p));
+        }
+        if let (Some(id), Some(p)) = (self.grabbed, pointer) {
+            if response.dragged_by(egui::PointerButton::Primary) {
+                let at = self.to_world(rect, p);
+                if let Some(n) = self.scene.nodes.iter_mut().find(|n| n.id == id) {
+                    n.position = at;
+                }
+                self.extras.dragging.insert(id);
+            }
+        }
+        if response.drag_stopped() {
+            self.grabbed = None;
+            self.extras.dragging.clear();
+        }
+        if response.clicked() {
+            let hit = pointer.and_then(|p| self.node_at(rect, p));
+            let shift = ui.input(|i| i.modifiers.shift);
+            match (shift, self.selected, hit) {
+                (true, Some(a), Some(b)) if a != b => self.toggle_edge(a, b),
+                (_, _, hit) => self.selected = hit,
+            }
+        }
+        if response.secondary_clicked() {
+            if let Some(id) = pointer.and_then(|p| self.node_at(rect, p)) {
+                if !self.extras.pinned.remove(&id) {
+                    self.extras.pinned.insert(id);
+                }
+            }
+        }
+        let position: std::collections::HashMap<u32, Point2D<f32>> = self
+            .scene
+            .nodes
+            .iter()
+            .map(|n| (n.id, n.position))
+            .collect();
+        for e in &self.scene.edges {
+            if let (Some(a), Some(b)) = (position.get(&e.source), position.get(&e.target)) {
+                painter.line_segment(
+                    [self.to_screen(rect, *a), self.to_screen(rect, *b)],
+                    egui::Stroke::new(1.0, egui::Color32::from_gray(170)),
+                );
+            }
+        }
+        for n in &self.scene.nodes {
+            let fill = if self.extras.pinned.contains(&n.id) {
+                egui::Color32::from_rgb(214, 39, 40)
+            } else if self.extras.dragging.contains(&n.id) {
+                egui::Color32::from_rgb(255, 127, 14)
+            } else {
+                egui::Color32::from_rgb(31, 119, 180)
+            };
+            let c = self.to_screen(rect, n.position);
+            painter.circle(
+                c,
+                n.radius.max(1.0) * self.zoom,
+                fill,
+                egui::Stroke::new(1.0, egui::Color32::WHITE),
+            );
+            if Some(n.id) == self.selected {
+                painter.circle_stroke(
+                    c,
+                    n.radius * self.zoom + 3.0,
+                    egui::Stroke::new(2.0, egui::Color32::BLACK),
+                );
+            }
+        }
+    }
+}
+
+impl eframe::App for Demo {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        let ctx = ui.ctx().clone();
+        let now = Instant::now();
+        let dt = (now - self.last_frame).as_secs_f32();
+        self.last_frame = now;
+        self.frame_ms = self.frame_ms * 0.9 + dt * 1e3 * 0.1;
+        let started = Instant::now();
+        let deltas = self.layout.step(
+            &self.scene,
+            &mut self.state,
+            dt,
+            &CanvasViewport::default(),
+            &self.extras,
+        );
+        self.step_us = self.step_us * 0.9 + started.elapsed().as_secs_f32() * 1e6 * 0.1;
+        for n in &mut self.scene.nodes {
+            if let Some(d) = deltas.get(&n.id) {
+                n.position += *d;
+            }
+        }
+        egui::Panel::left("controls").show(ui, |ui| self.side_panel(ui));
+        egui::CentralPanel::default()
+            .frame(egui::Frame::NONE)
+            .show(ui, |ui| self.canvas(ui));
+        if let Some(left) = self.frames_left.as_mut() {
+            *left = left.saturating_sub(1);
+            if *left == 0 {
+                println!(
+                    "frames done: {} calls, step {:.0} µs, converged {}",
+                    self.state.step_count,
+                    self.step_us,
+                    self.layout.is_converged(&self.state)
+                );
+                ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+            }
+        }
+        ctx.request_repaint();
+    }
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let frames_left = args
+        .iter()
+        .position(|a| a == "--frames")
+        .and_then(|i| args.get(i + 1))
+        .and_then(|n| n.parse().ok());
+    let path = args
+        .iter()
+        .find(|a| a.ends_with(".json"))
+        .cloned()
+        .unwrap_or_else(|| {
+            format!(
+                "{}/../scenes/les_miserables.json",
+                env!("CARGO_MANIFEST_DIR")
+            )
+        });
+    let scene = serde_json::from_str::<SceneFile>(&std::fs::read_to_string(&path)?)?.into_scene();
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_inner_size([1100.0, 750.0])
+            .with_title("graph-canvas-layout demo"),
+        ..Default::default()
+    };
+    eframe::run_native(
+        "graph-canvas-layout demo",
+        options,
+        Box::new(move |_cc| Ok(Box::new(Demo::new(scene, frames_left)))),
+    )?;
+    Ok(())
+}

@@ -92,11 +92,7 @@ fn frame(
     extras: &LayoutExtras<u32>,
 ) {
     let deltas = layout.step(scene, state, FRAME, &CanvasViewport::default(), extras);
-    for n in &mut scene.nodes {
-        if let Some(d) = deltas.get(&n.id) {
-            n.position += *d;
-        }
-    }
+    scene.apply_deltas(&deltas);
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

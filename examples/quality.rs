@@ -71,11 +71,7 @@ fn main() {
                 &CanvasViewport::default(),
                 &extras,
             );
-            for n in &mut scene.nodes {
-                if let Some(d) = deltas.get(&n.id) {
-                    n.position += *d;
-                }
-            }
+            scene.apply_deltas(&deltas);
             frames += 1;
         }
         let per_step = started.elapsed().as_secs_f64() * 1e6 / f64::from(frames.max(1));

@@ -36,11 +36,7 @@ impl Canvas {
             &self.extras,
         );
         self.step_time += started.elapsed();
-        for node in &mut self.scene.nodes {
-            if let Some(d) = deltas.get(&node.id) {
-                node.position += *d;
-            }
-        }
+        self.scene.apply_deltas(&deltas);
         deltas
     }
 

@@ -108,11 +108,7 @@ fn simulate(
     let started = Instant::now();
     for _ in 0..frames {
         let deltas = layout.step(scene, state, FRAME, &CanvasViewport::default(), &extras);
-        for n in &mut scene.nodes {
-            if let Some(d) = deltas.get(&n.id) {
-                n.position += *d;
-            }
-        }
+        scene.apply_deltas(&deltas);
     }
     started.elapsed().as_secs_f64()
 }

@@ -100,6 +100,31 @@ impl<N> CanvasSceneInput<N> {
     }
 }
 
+impl<N: Eq + std::hash::Hash> CanvasSceneInput<N> {
+    /// Adds each node's delta to its position: what a host that keeps its positions in
+    /// the scene does with the map [`Layout::step`](crate::Layout::step) returns.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::{Point2D, Vector2D}, CanvasNode, CanvasSceneInput, DeltaMap};
+    /// let mut scene = CanvasSceneInput::new(vec![CanvasNode::new(1_u32, Point2D::new(1.0, 1.0))], vec![]);
+    /// let mut deltas = DeltaMap::default();
+    /// deltas.insert(1, Vector2D::new(2.0, 0.0));
+    /// scene.apply_deltas(&deltas);
+    /// assert_eq!(scene.nodes[0].position, Point2D::new(3.0, 1.0));
+    /// ```
+    pub fn apply_deltas(&mut self, deltas: &crate::DeltaMap<N>) {
+        if deltas.is_empty() {
+            return;
+        }
+        for node in &mut self.nodes {
+            if let Some(delta) = deltas.get(&node.id) {
+                node.position += *delta;
+            }
+        }
+    }
+}
+
 impl<N> Default for CanvasSceneInput<N> {
     fn default() -> Self {
         Self::new(Vec::new(), Vec::new())

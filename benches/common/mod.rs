@@ -47,16 +47,8 @@ impl Host {
             &CanvasViewport::default(),
             &self.extras,
         );
-        apply(&mut self.scene, &deltas);
+        self.scene.apply_deltas(&deltas);
         deltas
-    }
-}
-
-pub fn apply(scene: &mut CanvasSceneInput<u32>, deltas: &DeltaMap<u32>) {
-    for node in &mut scene.nodes {
-        if let Some(d) = deltas.get(&node.id) {
-            node.position += *d;
-        }
     }
 }
 

@@ -287,11 +287,7 @@ impl eframe::App for Demo {
             &self.extras,
         );
         self.step_us = self.step_us * 0.9 + started.elapsed().as_secs_f32() * 1e6 * 0.1;
-        for n in &mut self.scene.nodes {
-            if let Some(d) = deltas.get(&n.id) {
-                n.position += *d;
-            }
-        }
+        self.scene.apply_deltas(&deltas);
         egui::Panel::left("controls").show(ui, |ui| self.side_panel(ui));
         egui::CentralPanel::default()
             .frame(egui::Frame::NONE)

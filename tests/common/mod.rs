@@ -39,7 +39,7 @@ impl<N: Clone + Eq + Hash + std::fmt::Debug> Host<N> {
             &CanvasViewport::default(),
             &self.extras,
         );
-        apply(&mut self.scene, &deltas);
+        self.scene.apply_deltas(&deltas);
         deltas
     }
 
@@ -73,14 +73,6 @@ impl<N: Clone + Eq + Hash + std::fmt::Debug> Host<N> {
             .world()
             .and_then(|w| w.get_position(id))
             .unwrap_or_else(|| panic!("node {id:?} has no body"))
-    }
-}
-
-pub fn apply<N: Clone + Eq + Hash>(scene: &mut CanvasSceneInput<N>, deltas: &DeltaMap<N>) {
-    for node in &mut scene.nodes {
-        if let Some(d) = deltas.get(&node.id) {
-            node.position += *d;
-        }
     }
 }
 

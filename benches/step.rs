@@ -178,6 +178,12 @@ fn headline(c: &mut Criterion) {
     persistent(c, "n200_e500", RapierLayoutConfig::default(), "persistent");
     bare(c, "n200_e500", BareModel::Layout, "rapier_floor");
     bare(c, "n200_e500", BareModel::Plan, "plan_model_floor");
+    // What each modelling choice saves.
+    bare(c, "n200_e500", BareModel::LayoutRotating, "rapier_floor_rotating");
+    let no_collisions = RapierLayoutConfig { collisions: false, ..Default::default() };
+    persistent(c, "n200_e500", no_collisions, "persistent_no_collisions");
+    let events = RapierLayoutConfig { contact_events: true, ..Default::default() };
+    persistent(c, "n200_e500", events, "persistent_contact_events");
     rebuild_per_step(c, "n200_e500");
     topology_check(c);
     asleep(c, "n200_e500");

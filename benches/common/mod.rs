@@ -58,6 +58,8 @@ pub enum BareModel {
     /// The same bodies, colliders and joints as the layout's default world: rotations
     /// locked, no events, length unit 100, the layout's solver settings.
     Layout,
+    /// `Layout` with disks free to rotate: what locking rotations saves.
+    LayoutRotating,
     /// The plan's model: disks free to rotate, colliders with collision events into
     /// channels, spring joints, default integration parameters.
     Plan,
@@ -81,7 +83,7 @@ impl Bare {
         let config = RapierLayoutConfig::default();
         let mut world = PhysicsWorld::new();
         world.gravity = Vector::ZERO;
-        if model == BareModel::Layout {
+        if model != BareModel::Plan {
             world.integration_parameters = IntegrationParameters {
                 length_unit: config.length_unit,
                 num_solver_iterations: config.accuracy.settings().0,
@@ -107,6 +109,9 @@ impl Bare {
                 BareModel::Layout => {
                     body = body.lock_rotations().additional_mass(mass);
                     collider = collider.density(0.0);
+                }
+                BareModel::LayoutRotating => {
+                    collider = collider.density(m.density);
                 }
                 BareModel::Plan => {
                     collider = collider
@@ -142,7 +147,7 @@ impl Bare {
 
     pub fn step(&mut self) {
         match self.model {
-            BareModel::Layout => self.world.step(),
+            BareModel::Layout | BareModel::LayoutRotating => self.world.step(),
             BareModel::Plan => {
                 self.world.step_with_events(&(), &self.collector);
                 while self._receivers.0.try_recv().is_ok() {}

@@ -179,10 +179,21 @@ fn headline(c: &mut Criterion) {
     bare(c, "n200_e500", BareModel::Layout, "rapier_floor");
     bare(c, "n200_e500", BareModel::Plan, "plan_model_floor");
     // What each modelling choice saves.
-    bare(c, "n200_e500", BareModel::LayoutRotating, "rapier_floor_rotating");
-    let no_collisions = RapierLayoutConfig { collisions: false, ..Default::default() };
+    bare(
+        c,
+        "n200_e500",
+        BareModel::LayoutRotating,
+        "rapier_floor_rotating",
+    );
+    let no_collisions = RapierLayoutConfig {
+        collisions: false,
+        ..Default::default()
+    };
     persistent(c, "n200_e500", no_collisions, "persistent_no_collisions");
-    let events = RapierLayoutConfig { contact_events: true, ..Default::default() };
+    let events = RapierLayoutConfig {
+        contact_events: true,
+        ..Default::default()
+    };
     persistent(c, "n200_e500", events, "persistent_contact_events");
     rebuild_per_step(c, "n200_e500");
     topology_check(c);

@@ -201,7 +201,10 @@ impl Demo {
         }
         let pointer = response.interact_pointer_pos().or(response.hover_pos());
         if response.drag_started_by(egui::PointerButton::Primary) {
-            self.grabbed = pointer.and_then(|p| self.node_at(rect, p));
+            // Hit-test where the button went down: by the time egui calls it a drag the
+            // pointer has left a small node.
+            let origin = ui.input(|i| i.pointer.press_origin()).or(pointer);
+            self.grabbed = origin.and_then(|p| self.node_at(rect, p));
         }
         if let (Some(id), Some(p)) = (self.grabbed, pointer) {
             if response.dragged_by(egui::PointerButton::Primary) {

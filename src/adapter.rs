@@ -691,7 +691,6 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                         body.set_linvel(Vector::ZERO, false);
                     }
                     let slot = &mut world.slots[s];
-                    slot.frozen = true;
                     slot.dragging = false;
                     slot.initial = body_pos;
                     continue;
@@ -743,7 +742,6 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 }
             }
             let slot = &mut world.slots[s];
-            slot.frozen = false;
             slot.fresh = false;
             slot.pinned = m.pinned;
             slot.initial = host;

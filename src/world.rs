@@ -79,8 +79,6 @@ pub(crate) struct NodeSlot<N> {
     pub(crate) stamp: u64,
     pub(crate) pinned: bool,
     pub(crate) dragging: bool,
-    /// Held still because the host's values for it are not usable this call.
-    pub(crate) frozen: bool,
     pub(crate) drag_position: Point2D<f32>,
     pub(crate) drag_velocity: Vector2D<f32>,
     /// Inserted during this call: its body may sit off the host's position (coincident
@@ -321,7 +319,6 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             stamp: 0,
             pinned: false,
             dragging: false,
-            frozen: false,
             drag_position: position,
             drag_velocity: Vector2D::zero(),
             fresh: true,

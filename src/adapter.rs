@@ -225,15 +225,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         scene: &CanvasSceneInput<N>,
         extras: &LayoutExtras<N>,
     ) -> bool {
-        let nodes_changed = self.match_nodes(scene, extras);
-        if !nodes_changed && self.topology_hash != 0 && self.edges_match_cache(scene) {
-            return false;
-        }
-        let world = self.world.as_ref();
-        let topology = Topology::of(scene, extras, |id| {
-            world.is_some_and(|w| w.contains_node(id))
-        });
-        topology.hash != self.topology_hash
+        self.candidate_topology(scene, extras)
+            .is_some_and(|topology| topology.hash != self.topology_hash)
     }
 
     /// Nodes whose bodies went non-finite during the last call (rapier quarantined
@@ -486,17 +479,27 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 .all(|((s, t), e)| *s == e.source && *t == e.target)
     }
 
-    /// Pass 1. Returns whether the world's structure changed.
-    fn sync_topology(&mut self, scene: &CanvasSceneInput<N>, extras: &LayoutExtras<N>) -> bool {
+    /// Matches scene nodes to bodies and returns the scene's topology when it may differ
+    /// from the world's; `None` when the cheap checks show it cannot.
+    fn candidate_topology(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+    ) -> Option<Topology> {
         let nodes_changed = self.match_nodes(scene, extras);
         if !nodes_changed && self.topology_hash != 0 && self.edges_match_cache(scene) {
-            return false;
+            return None;
         }
-        let topology = {
-            let world = self.world.as_ref();
-            Topology::of(scene, extras, |id| {
-                world.is_some_and(|w| w.contains_node(id))
-            })
+        let world = self.world.as_ref();
+        Some(Topology::of(scene, extras, |id| {
+            world.is_some_and(|w| w.contains_node(id))
+        }))
+    }
+
+    /// Pass 1. Returns whether the world's structure changed.
+    fn sync_topology(&mut self, scene: &CanvasSceneInput<N>, extras: &LayoutExtras<N>) -> bool {
+        let Some(topology) = self.candidate_topology(scene, extras) else {
+            return false;
         };
         self.cached_edges.clear();
         self.cached_edges.extend(

@@ -10,6 +10,15 @@ use graph_canvas_layout::{
     RapierSceneWorld,
 };
 
+/// The largest distance of a node of `host`'s scene from `center`.
+fn farthest_from(host: &Host<u32>, center: Point2D<f32>) -> f32 {
+    host.scene
+        .nodes
+        .iter()
+        .map(|n| (n.position - center).length())
+        .fold(0.0, f32::max)
+}
+
 /// Runs `frames` frames and returns the largest per-frame displacement seen; panics on
 /// any non-finite delta or position.
 fn run_checked(host: &mut Host<u32>, frames: usize, dt: f32, what: &str) -> f32 {
@@ -48,12 +57,7 @@ fn huge_coordinates_stay_finite_and_calm() {
             largest < 300.0,
             "offset {offset:e}: a node moved {largest} units in one frame"
         );
-        let far = host
-            .scene
-            .nodes
-            .iter()
-            .map(|n| (n.position - Point2D::new(offset, -offset)).length())
-            .fold(0.0, f32::max);
+        let far = farthest_from(&host, Point2D::new(offset, -offset));
         assert!(
             far < 2000.0,
             "offset {offset:e}: a node drifted {far} units from the graph's origin"
@@ -78,12 +82,7 @@ fn stiff_springs_do_not_explode() {
             largest < 400.0,
             "stiffness {stiffness:e}: a node jumped {largest} in one frame"
         );
-        let extent = host
-            .scene
-            .nodes
-            .iter()
-            .map(|n| n.position.to_vector().length())
-            .fold(0.0, f32::max);
+        let extent = farthest_from(&host, Point2D::origin());
         assert!(
             extent < 5000.0,
             "stiffness {stiffness:e}: the graph spread to radius {extent}"
@@ -109,12 +108,7 @@ fn coincident_nodes_come_apart_without_exploding() {
             closest = closest.min(dist(a.position, b.position));
         }
     }
-    let extent = host
-        .scene
-        .nodes
-        .iter()
-        .map(|n| n.position.to_vector().length())
-        .fold(0.0, f32::max);
+    let extent = farthest_from(&host, Point2D::origin());
     assert!(
         closest > 20.0,
         "after 5 s two of the 50 nodes are still {closest} apart (radius 16)"

@@ -17,7 +17,7 @@ use rapier2d::prelude::{RigidBodyType, Vector};
 use serde::{Deserialize, Serialize};
 
 use crate::bindings::{ColliderSpec, NodeAvatarBinding, SceneBodyKind};
-use crate::config::{BodyKindPolicy, RapierLayoutConfig, TopologyUpdate};
+use crate::config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, TopologyUpdate};
 use crate::events::SceneEvent;
 use crate::layout::{DeltaMap, IdHasher, Layout, LayoutExtras};
 use crate::repulsion::ManyBody;
@@ -124,6 +124,8 @@ pub struct RapierLayout<N> {
     recovered: Vec<N>,
     /// This call's fixed timestep; new joints are tuned for it.
     fixed_dt: f32,
+    /// The layout's heat under [`RapierLayoutConfig::cooling`], in `(0, 1]`.
+    alpha: f32,
 }
 
 impl<N> std::fmt::Debug for RapierLayout<N> {
@@ -174,6 +176,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             points: Vec::new(),
             recovered: Vec::new(),
             fixed_dt: DEFAULT_TIMESTEP,
+            alpha: 1.0,
         }
     }
 
@@ -227,6 +230,27 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     ) -> bool {
         self.candidate_topology(scene, extras)
             .is_some_and(|topology| topology.hash != self.topology_hash)
+    }
+
+    /// The layout's heat under [`RapierLayoutConfig::cooling`]: 1 after the first build
+    /// or a disturbance, falling to [`Cooling::min_alpha`](crate::Cooling::min_alpha)
+    /// over [`Cooling::duration`](crate::Cooling::duration). `None` without a schedule.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasNode, CanvasSceneInput, Layout,
+    ///     LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState};
+    /// let scene = CanvasSceneInput::new(vec![CanvasNode::new(1_u32, Point2D::origin())], vec![]);
+    /// let mut layout = RapierLayout::new(RapierLayoutConfig::force_directed());
+    /// let mut state = RapierLayoutState::default();
+    /// for _ in 0..60 {
+    ///     layout.step(&scene, &mut state, 1.0 / 60.0, &Default::default(), &LayoutExtras::default());
+    /// }
+    /// let alpha = layout.heat().unwrap();
+    /// assert!(alpha < 0.5 && alpha > 0.1, "one second of a 5 s schedule: {alpha}");
+    /// ```
+    pub fn heat(&self) -> Option<f32> {
+        self.config.cooling.map(|_| self.alpha)
     }
 
     /// Nodes whose bodies went non-finite during the last call (rapier quarantined
@@ -298,8 +322,9 @@ impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
 
     /// True when the layout is at rest: a world exists, no dynamic body moved faster
     /// than [`RapierLayoutConfig::rest_speed`] for [`REST_TIME`] seconds of simulated
-    /// time, and nothing (a drag, a release, a host move, a topology change) disturbed
-    /// it meanwhile.
+    /// time, nothing (a drag, a release, a host move, a topology change) disturbed it
+    /// meanwhile, and every dynamic body is asleep: once true, calls report no motion
+    /// until something disturbs the layout.
     fn is_converged(&self, _state: &RapierLayoutState) -> bool {
         self.world.is_some() && self.converged
     }
@@ -335,6 +360,11 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.apply_config_changes();
         let mut disturbed = self.sync_topology(scene, extras);
         disturbed |= self.sync_in(scene, extras, plan.frame_dt);
+        if let Some(cooling) = self.config.cooling {
+            if disturbed || !self.drives.is_empty() {
+                self.alpha = cooling.reheated(self.alpha);
+            }
+        }
         let gravity = Vector2D::new(
             finite_or(state.gravity_x, 0.0),
             finite_or(state.gravity_y, 0.0),
@@ -345,10 +375,14 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.recovered.extend(world.take_recovered_nodes());
         }
         state.simulated_time += f64::from(plan.simulated());
-        let (deltas, max_speed) = self.sync_out(scene);
+        if let Some(cooling) = self.config.cooling {
+            self.alpha = cooling.cooled(self.alpha, plan.simulated());
+        }
+        let (deltas, max_speed, awake) = self.sync_out(scene);
         self.track_rest(
             disturbed || !self.drives.is_empty(),
             max_speed,
+            awake,
             plan.simulated(),
         );
         deltas
@@ -382,10 +416,19 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 world.reset_forces();
             }
         }
+        if applied.cooling.is_some() != self.config.cooling.is_some() {
+            // A schedule starts hot; without one the springs have their full stiffness.
+            self.alpha = 1.0;
+            if let Some(world) = self.world.as_mut() {
+                world.set_spring_scale(1.0);
+            }
+        }
         if structural {
             self.world = None;
             self.topology_hash = 0;
-        } else if applied.edge_joint != self.config.edge_joint {
+        } else if applied.edge_joint != self.config.edge_joint
+            || applied.degree_scaled_springs != self.config.degree_scaled_springs
+        {
             if let Some(world) = self.world.as_mut() {
                 world.clear_edge_joints();
             }
@@ -562,16 +605,18 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 slot.drag_velocity = old.drag_velocity;
             }
         }
+        let degrees = topology.degrees(scene.nodes.len());
         for &(a, b) in &topology.edges {
             world.insert_edge_joint(
                 &scene.nodes[a].id,
                 &scene.nodes[b].id,
-                &self.config.edge_joint,
+                &self.edge_joint_for(degrees[a], degrees[b]),
             );
         }
         self.world = Some(world);
         self.applied = Some(self.config.clone());
         self.rebuilds += 1;
+        self.alpha = 1.0;
     }
 
     /// Inserts and removes only what changed; untouched bodies keep their motion.
@@ -581,7 +626,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             .iter()
             .map(|&i| self.binding_for(&scene.nodes[i]))
             .collect();
-        let edge_joint = self.config.edge_joint;
+        let degrees = topology.degrees(scene.nodes.len());
+        let config = self.config.clone();
+        let edge_joint = |da: u32, db: u32| edge_joint_for(&config, da, db);
         let Some(world) = self.world.as_mut() else {
             return;
         };
@@ -626,9 +673,25 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             _ => false,
         });
         for &(a, b) in &topology.edges {
-            world.insert_edge_joint(&scene.nodes[a].id, &scene.nodes[b].id, &edge_joint);
+            world.insert_edge_joint(
+                &scene.nodes[a].id,
+                &scene.nodes[b].id,
+                &edge_joint(degrees[a], degrees[b]),
+            );
+        }
+        if config.degree_scaled_springs {
+            // Springs whose ends changed degree take their new share.
+            world.retune_edge_joints(|a, b| match (index_of.get(a), index_of.get(b)) {
+                (Some(&x), Some(&y)) => edge_joint(degrees[x], degrees[y]),
+                _ => config.edge_joint,
+            });
         }
         self.patches += 1;
+    }
+
+    /// The joint for an edge whose ends have `da` and `db` distinct neighbours.
+    fn edge_joint_for(&self, da: u32, db: u32) -> EdgeJoint {
+        edge_joint_for(&self.config, da, db)
     }
 
     /// The body type a node should have this call.
@@ -786,6 +849,19 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let (iterations, pgs_iterations, _) = config.accuracy.settings();
         params.num_solver_iterations = iterations;
         params.num_internal_pgs_iterations = pgs_iterations;
+        params.contact_softness = config.contact_softness.coefficients();
+        let heat = match config.cooling {
+            Some(_) => {
+                // Springs follow the heat in steps of 5 %: each re-tune touches every joint.
+                let scale = world.spring_scale();
+                let at_floor = self.alpha <= cooling_floor(config);
+                if (self.alpha - scale).abs() > 0.05 * scale || at_floor {
+                    world.set_spring_scale(self.alpha); // a no-op when already there
+                }
+                world.spring_scale()
+            }
+            None => 1.0,
+        };
         for k in 0..plan.substeps {
             if !self.drives.is_empty() {
                 let t = (k + 1) as f32 / plan.substeps as f32;
@@ -802,20 +878,28 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 }
             }
             if let Some(repulsion) = config.repulsion {
-                apply_repulsion(world, &mut self.many_body, &mut self.points, &repulsion);
+                apply_repulsion(
+                    world,
+                    &mut self.many_body,
+                    &mut self.points,
+                    &repulsion,
+                    heat,
+                );
             }
             world.step(gravity);
         }
     }
 
-    /// Pass 4. Returns the deltas and the fastest dynamic body's speed.
-    fn sync_out(&mut self, scene: &CanvasSceneInput<N>) -> (DeltaMap<N>, f32) {
+    /// Pass 4. Returns the deltas, the fastest dynamic body's speed and how many dynamic
+    /// bodies are awake.
+    fn sync_out(&mut self, scene: &CanvasSceneInput<N>) -> (DeltaMap<N>, f32, usize) {
         let epsilon = self.config.delta_epsilon.max(0.0);
         let epsilon_sq = epsilon * epsilon;
         let mut deltas = DeltaMap::with_capacity_and_hasher(scene.nodes.len(), IdHasher::default());
         let mut max_speed_sq: f32 = 0.0;
+        let mut awake = 0;
         let Some(world) = self.world.as_mut() else {
-            return (deltas, 0.0);
+            return (deltas, 0.0, 0);
         };
         for (node, m) in scene.nodes.iter().zip(&self.matches) {
             if m.slot == NO_SLOT {
@@ -828,6 +912,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             }
             if !body.is_sleeping() {
                 max_speed_sq = max_speed_sq.max(body.linvel().length_squared());
+                awake += 1;
             }
             let t = body.translation();
             let slot = &mut world.slots[s];
@@ -838,18 +923,46 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 deltas.insert(node.id.clone(), delta);
             }
         }
-        (deltas, max_speed_sq.sqrt())
+        (deltas, max_speed_sq.sqrt(), awake)
     }
 
-    fn track_rest(&mut self, disturbed: bool, max_speed: f32, simulated: f32) {
+    /// At rest: calm for [`REST_TIME`] and every dynamic body asleep, so a converged
+    /// layout reports no motion at all until something disturbs it.
+    fn track_rest(&mut self, disturbed: bool, max_speed: f32, awake: usize, simulated: f32) {
         let calm = max_speed.is_finite() && max_speed <= self.config.rest_speed;
         if disturbed || !calm {
             self.calm_time = 0.0;
         } else {
             self.calm_time += simulated;
         }
-        self.converged = self.calm_time >= REST_TIME;
+        self.converged = self.calm_time >= REST_TIME && awake == 0;
     }
+}
+
+/// The joint `config` gives an edge whose ends have `da` and `db` distinct neighbours:
+/// [`RapierLayoutConfig::edge_joint`], with a spring's stiffness and damping divided by
+/// `min(da, db)` under [`RapierLayoutConfig::degree_scaled_springs`].
+fn edge_joint_for(config: &RapierLayoutConfig, da: u32, db: u32) -> EdgeJoint {
+    match config.edge_joint {
+        EdgeJoint::Spring {
+            rest_length,
+            stiffness,
+            damping,
+        } if config.degree_scaled_springs => {
+            let share = da.min(db).max(1) as f32;
+            EdgeJoint::Spring {
+                rest_length,
+                stiffness: stiffness / share,
+                damping: damping / share,
+            }
+        }
+        kind => kind,
+    }
+}
+
+/// The heat at which `config`'s cooling schedule stops (0 without one).
+fn cooling_floor(config: &RapierLayoutConfig) -> f32 {
+    config.cooling.map_or(0.0, |c| c.floor())
 }
 
 /// `v` shortened to `max_speed` (no cap when `max_speed` is not positive).
@@ -870,6 +983,7 @@ fn apply_repulsion<N: Clone + Eq + Hash>(
     tree: &mut ManyBody,
     points: &mut Vec<Point2D<f32>>,
     repulsion: &crate::repulsion::Repulsion,
+    heat: f32,
 ) {
     if world.awake_body_count() == 0 {
         return;
@@ -877,10 +991,10 @@ fn apply_repulsion<N: Clone + Eq + Hash>(
     points.clear();
     points.extend((0..world.slots.len()).map(|s| world.position_at(s)));
     tree.build(points);
-    let strength = finite_or(repulsion.strength, 0.0);
+    let strength = finite_or(repulsion.strength, 0.0) * heat;
     let theta = finite_or(repulsion.theta, 0.0).max(0.0);
     let min_distance = finite_or(repulsion.min_distance, 1.0).max(1e-3);
-    let pull = finite_or(repulsion.center_pull, 0.0);
+    let pull = finite_or(repulsion.center_pull, 0.0) * heat;
     let center = repulsion.center;
     for (s, &point) in points.iter().enumerate() {
         let body = world.body_at(s);

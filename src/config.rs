@@ -4,6 +4,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::bindings::{EdgeJointSpec, PhysicsMaterial};
+use crate::cooling::Cooling;
 use crate::repulsion::Repulsion;
 
 /// What each edge becomes in the physics world.
@@ -143,6 +144,65 @@ impl Accuracy {
     }
 }
 
+/// How firmly contacts between nodes push overlapping disks apart: rapier's contact
+/// softness, a spring per contact with this natural frequency and damping ratio.
+///
+/// A contact removes a fraction `erp = ω dt / (ω dt + 2ζ)` of the overlap per step
+/// (`ω = 2π × natural_frequency`). Rapier's default (30 Hz, ζ = 10) removes 14 % per
+/// 1/60 s step: soft, forgiving contacts that let stiff springs press disks into each
+/// other. 240 Hz with ζ = 1 removes 93 %: nearly rigid, so no spring can squeeze two
+/// nodes together, at the price of livelier collisions.
+///
+/// # Example
+/// ```
+/// use graph_canvas_layout::ContactSoftness;
+/// let firm = ContactSoftness { natural_frequency: 240.0, damping_ratio: 1.0 };
+/// assert!(firm.overlap_removed_per_step(1.0 / 60.0) > 0.9);
+/// assert!(ContactSoftness::default().overlap_removed_per_step(1.0 / 60.0) < 0.15);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct ContactSoftness {
+    /// Natural frequency of the contact spring, in Hz. Higher is firmer. Default: `30.0`.
+    pub natural_frequency: f32,
+    /// Damping ratio of the contact spring. Lower corrects overlap faster and bounces
+    /// more. Default: `10.0`.
+    pub damping_ratio: f32,
+}
+
+impl Default for ContactSoftness {
+    /// Rapier's own contact softness: 30 Hz, ζ = 10.
+    fn default() -> Self {
+        Self {
+            natural_frequency: 30.0,
+            damping_ratio: 10.0,
+        }
+    }
+}
+
+impl ContactSoftness {
+    /// The fraction of an overlap one step of `dt` seconds removes (rapier's ERP).
+    pub fn overlap_removed_per_step(self, dt: f32) -> f32 {
+        self.coefficients().erp(dt)
+    }
+
+    /// Rapier's coefficients, with unusable values replaced by rapier's defaults.
+    pub(crate) fn coefficients(self) -> rapier2d::prelude::SpringCoefficients<f32> {
+        let defaults = Self::default();
+        let frequency = if self.natural_frequency.is_finite() && self.natural_frequency > 0.0 {
+            self.natural_frequency
+        } else {
+            defaults.natural_frequency
+        };
+        let ratio = if self.damping_ratio.is_finite() && self.damping_ratio >= 0.0 {
+            self.damping_ratio
+        } else {
+            defaults.damping_ratio
+        };
+        rapier2d::prelude::SpringCoefficients::new(frequency, ratio)
+    }
+}
+
 /// What to do when the topology hash changes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum TopologyUpdate {
@@ -209,6 +269,25 @@ pub struct RapierLayoutConfig {
     /// Displacements shorter than this (world units) are left out of the returned map;
     /// they stay owed to the host and are reported once they add up. Default: `1e-4`.
     pub delta_epsilon: f32,
+    /// Divide each [`EdgeJoint::Spring`]'s stiffness by the smaller degree of its two
+    /// ends, as d3-force's link strength `1 / min(degree)`: a hub's many springs then
+    /// pull no harder in sum than a leaf's one, so hubs do not crush their
+    /// neighbourhoods and edge lengths spread less. Degrees count distinct neighbours;
+    /// a topology edit re-tunes the springs whose ends changed degree. Costs nothing per
+    /// step. Default: `false` ([`RapierLayoutConfig::force_directed`] turns it on).
+    pub degree_scaled_springs: bool,
+    /// A cooling schedule that brings the layout to rest in bounded time, or `None` to
+    /// let it run to its force equilibrium. With a schedule, springs, repulsion and
+    /// centre pull fade together over [`Cooling::duration`] after the last disturbance
+    /// and the layout stops near (not at) its equilibrium; see [`Cooling`]. Costs an
+    /// in-place re-tune of every spring about every 3 % of the schedule while cooling,
+    /// nothing at rest. Default: `None` ([`RapierLayoutConfig::force_directed`] turns it
+    /// on).
+    pub cooling: Option<Cooling>,
+    /// How firmly contacts push overlapping nodes apart; see [`ContactSoftness`].
+    /// Default: [`ContactSoftness::default`], rapier's 30 Hz, ζ = 10
+    /// ([`RapierLayoutConfig::force_directed`] uses 240 Hz, ζ = 1).
+    pub contact_softness: ContactSoftness,
 }
 
 impl Default for RapierLayoutConfig {
@@ -229,34 +308,67 @@ impl Default for RapierLayoutConfig {
             rest_speed: 5.0,
             delta_epsilon: 1e-4,
             repulsion: None,
+            degree_scaled_springs: false,
+            cooling: None,
+            contact_softness: ContactSoftness::default(),
         }
     }
 }
 
 impl RapierLayoutConfig {
-    /// A configuration for laying graphs out, comparable to d3-force's defaults: springs
-    /// of rest length 100, many-body repulsion with a gentle centre pull, colliding
-    /// disks, and enough damping to come to rest in a few seconds.
+    /// A configuration for laying graphs out: d3-force's default forces converted to
+    /// physical units, on colliding disks, cooled to rest in bounded time.
+    ///
+    /// d3-force moves nodes in units per tick; at 60 ticks per second and the default
+    /// node mass (density 0.005 × π 16² ≈ 4.0) its forces become:
+    /// - links of distance 100 with strength `1 / min(degree)`: springs of rest length
+    ///   100, stiffness 7,200 divided by the smaller end degree
+    ///   ([`degree_scaled_springs`](Self::degree_scaled_springs)), no spring damping.
+    ///   7,200 is what a 1/60 s step resolves between two default nodes
+    ///   ([`max_resolved_stiffness`](crate::max_resolved_stiffness)), d3's link at full
+    ///   heat;
+    /// - many-body strength −30: [`Repulsion`] of strength 430,000 (`30 × m × 60²`),
+    ///   theta 0.9, with a gentle centre pull;
+    /// - velocity decay 0.4 per tick would be linear damping 40 per second; half of it,
+    ///   20, lets tangles slip free before the layout freezes;
+    /// - alpha decay: a [`Cooling`] schedule that scales springs and repulsion together,
+    ///   over 8 s (d3 takes 5 s; the longer schedule untangles trees and grids further
+    ///   before they freeze);
+    /// - collide at the node radius: firm contacts ([`ContactSoftness`] 240 Hz, ζ = 1),
+    ///   which keep the stiff springs from pressing nodes into each other.
+    ///
+    /// Every shipped graph comes to rest (every body asleep) within 9 s of simulated
+    /// time after the last disturbance. The damping is d3's: a throw stops within a few frames. For a
+    /// physical feel (coasting throws), start from [`RapierLayoutConfig::default`].
     ///
     /// # Example
     /// ```
     /// use graph_canvas_layout::RapierLayoutConfig;
     /// let config = RapierLayoutConfig::force_directed();
-    /// assert!(config.repulsion.is_some());
+    /// assert!(config.repulsion.is_some() && config.cooling.is_some());
     /// ```
     pub fn force_directed() -> Self {
         let defaults = Self::default();
         Self {
             edge_joint: EdgeJoint::Spring {
                 rest_length: 100.0,
-                stiffness: 50.0,
-                damping: 2.0,
+                stiffness: 7_200.0,
+                damping: 0.0,
             },
             material: PhysicsMaterial {
-                linear_damping: 2.0,
+                linear_damping: 20.0,
                 ..defaults.material
             },
             repulsion: Some(Repulsion::default()),
+            degree_scaled_springs: true,
+            cooling: Some(Cooling {
+                duration: 8.0,
+                ..Cooling::default()
+            }),
+            contact_softness: ContactSoftness {
+                natural_frequency: 240.0,
+                damping_ratio: 1.0,
+            },
             ..defaults
         }
     }

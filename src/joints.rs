@@ -41,6 +41,23 @@ pub fn max_resolved_stiffness(reduced_mass: f32, dt: f32) -> f32 {
     }
 }
 
+/// `kind` with a spring's stiffness and damping multiplied by `scale`; other kinds as
+/// they are.
+pub(crate) fn scaled_spring(kind: &EdgeJoint, scale: f32) -> EdgeJoint {
+    match *kind {
+        EdgeJoint::Spring {
+            rest_length,
+            stiffness,
+            damping,
+        } => EdgeJoint::Spring {
+            rest_length,
+            stiffness: stiffness * scale,
+            damping: damping * scale,
+        },
+        other => other,
+    }
+}
+
 /// The rapier joint for one edge, or `None` for [`EdgeJoint::None`].
 ///
 /// `reduced_mass` is `m1 m2 / (m1 + m2)` of the two bodies: the rope uses it to turn

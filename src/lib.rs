@@ -93,6 +93,7 @@
 mod adapter;
 mod bindings;
 mod config;
+mod cooling;
 mod events;
 mod joints;
 mod layout;
@@ -112,7 +113,10 @@ pub use adapter::{RapierLayout, RapierLayoutState, REST_TIME};
 pub use bindings::{
     ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot, PhysicsMaterial, SceneBodyKind,
 };
-pub use config::{Accuracy, BodyKindPolicy, EdgeJoint, RapierLayoutConfig, TopologyUpdate};
+pub use config::{
+    Accuracy, BodyKindPolicy, ContactSoftness, EdgeJoint, RapierLayoutConfig, TopologyUpdate,
+};
+pub use cooling::Cooling;
 pub use events::SceneEvent;
 pub use joints::max_resolved_stiffness;
 pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeSet};

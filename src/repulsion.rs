@@ -15,7 +15,9 @@ use serde::{Deserialize, Serialize};
 pub struct Repulsion {
     /// Force between two nodes `d` apart is `strength / d` (force × length). Larger
     /// values spread the graph out; springs balance it at the edge length where
-    /// `stiffness × stretch = strength × neighbours / length`. Default: `40_000.0`.
+    /// `stiffness × stretch = strength × neighbours / length`. Default: `430_000.0`
+    /// (d3-force's many-body strength −30 for a default node of mass 4 at 60 ticks per
+    /// second: `30 × 4 × 60²`).
     pub strength: f32,
     /// Barnes–Hut opening ratio: a cell of width `w` at distance `d` counts as one body
     /// when `w / d < theta`. 0 is the exact sum; larger is cheaper and coarser (see the
@@ -34,7 +36,7 @@ pub struct Repulsion {
 impl Default for Repulsion {
     fn default() -> Self {
         Self {
-            strength: 40_000.0,
+            strength: 430_000.0,
             theta: 0.9,
             min_distance: 8.0,
             center_pull: 0.5,

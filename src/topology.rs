@@ -98,6 +98,19 @@ impl Topology {
     }
 }
 
+impl Topology {
+    /// Distinct neighbours of each scene node (indexed like `scene.nodes`, of length
+    /// `node_count`), counted over the modelled edges.
+    pub(crate) fn degrees(&self, node_count: usize) -> Vec<u32> {
+        let mut degrees = vec![0_u32; node_count];
+        for &(a, b) in &self.edges {
+            degrees[a] += 1;
+            degrees[b] += 1;
+        }
+        degrees
+    }
+}
+
 /// The order-free topology hash of a scene: node ids, undirected de-duplicated edges
 /// (self-loops and edges naming missing nodes left out) and the pinned nodes. Input
 /// order does not change it; ids need `Hash + Eq`, never `Ord`. Nodes with unusable

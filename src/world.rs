@@ -20,7 +20,7 @@ use rapier2d::prelude::{
 use crate::bindings::{ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot};
 use crate::config::EdgeJoint;
 use crate::events::{CollisionCollector, SceneEvent};
-use crate::joints::rapier_joint;
+use crate::joints::{rapier_joint, scaled_spring};
 use crate::layout::{DeltaMap, IdHasher};
 
 /// Displacements shorter than this are left out of [`RapierSceneWorld::read_positions`].
@@ -92,6 +92,8 @@ struct JointSlot<N> {
     handle: ImpulseJointHandle,
     a: N,
     b: N,
+    /// What the joint was built as: a re-tune to the same kind is skipped.
+    kind: EdgeJoint,
 }
 
 /// A persistent rapier world whose bodies are the nodes of a graph.
@@ -145,6 +147,8 @@ pub struct RapierSceneWorld<N> {
     dropped_events: u64,
     recovered: Vec<N>,
     topology_hash: u64,
+    /// Factor on every spring's stiffness and damping (a cooling layout's heat).
+    spring_scale: f32,
 }
 
 impl<N: Clone + Eq + Hash> Default for RapierSceneWorld<N> {
@@ -216,6 +220,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             dropped_events: 0,
             recovered: Vec::new(),
             topology_hash: 0,
+            spring_scale: 1.0,
         }
     }
 
@@ -381,7 +386,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             return false;
         }
         let reduced_mass = sa.mass * sb.mass / (sa.mass + sb.mass);
-        let Some(joint) = rapier_joint(kind, reduced_mass, self.params.dt) else {
+        let built = scaled_spring(kind, self.spring_scale);
+        let Some(joint) = rapier_joint(&built, reduced_mass, self.params.dt) else {
             return false;
         };
         let handle = self.impulse_joints.insert(sa.body, sb.body, joint, true);
@@ -391,8 +397,119 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             handle,
             a: a.clone(),
             b: b.clone(),
+            kind: *kind,
         });
         true
+    }
+
+    /// Gives every joint the kind `kind_of(a, b)` names, in place: bodies keep their
+    /// motion, and joints already of that kind are left untouched. A joint whose new
+    /// kind is [`EdgeJoint::None`] is removed. Joints are visited in insertion order.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, EdgeJoint, NodeAvatarBinding,
+    ///     NodeSnapshot, RapierSceneWorld};
+    /// let mut world = RapierSceneWorld::new();
+    /// let snap = |id, x| NodeSnapshot { id, position: Point2D::new(x, 0.0), radius: 16.0, pinned: false };
+    /// world.build_bodies(
+    ///     &[NodeAvatarBinding::circle(0_u32, 16.0), NodeAvatarBinding::circle(1, 16.0)],
+    ///     &[snap(0, 0.0), snap(1, 300.0)],
+    /// );
+    /// world.insert_edge_joint(&0, &1, &EdgeJoint::default());
+    /// let softer = EdgeJoint::Spring { rest_length: 100.0, stiffness: 5.0, damping: 1.0 };
+    /// assert_eq!(world.retune_edge_joints(|_, _| softer), 1);
+    /// assert_eq!(world.retune_edge_joints(|_, _| softer), 0, "already that kind");
+    /// assert_eq!(world.joint_count(), 1);
+    /// ```
+    pub fn retune_edge_joints(&mut self, mut kind_of: impl FnMut(&N, &N) -> EdgeJoint) -> usize {
+        let mut changed = 0;
+        let mut i = 0;
+        while i < self.joints.len() {
+            let kind = kind_of(&self.joints[i].a, &self.joints[i].b);
+            if kind == self.joints[i].kind {
+                i += 1;
+                continue;
+            }
+            changed += 1;
+            let masses = (
+                self.index.get(&self.joints[i].a),
+                self.index.get(&self.joints[i].b),
+            );
+            let built = match masses {
+                (Some(&ia), Some(&ib)) => {
+                    let (ma, mb) = (self.slots[ia as usize].mass, self.slots[ib as usize].mass);
+                    let built = scaled_spring(&kind, self.spring_scale);
+                    rapier_joint(&built, ma * mb / (ma + mb), self.params.dt)
+                }
+                _ => None,
+            };
+            match built {
+                Some(data) => {
+                    let slot = &mut self.joints[i];
+                    slot.kind = kind;
+                    if let Some(joint) = self.impulse_joints.get_mut(slot.handle, true) {
+                        joint.data = data;
+                    }
+                    i += 1;
+                }
+                None => self.remove_joint_at(i, true),
+            }
+        }
+        changed
+    }
+
+    /// Multiplies every spring's stiffness and damping by `scale` (relative to the kind
+    /// it was inserted as), in place and without waking anything; new springs take the
+    /// factor too. A cooling layout passes its heat here. Non-finite or negative values
+    /// count as 0. Returns how many joints changed.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, EdgeJoint, NodeAvatarBinding,
+    ///     NodeSnapshot, RapierSceneWorld};
+    /// let mut world = RapierSceneWorld::new();
+    /// let snap = |id, x| NodeSnapshot { id, position: Point2D::new(x, 0.0), radius: 16.0, pinned: false };
+    /// world.build_bodies(
+    ///     &[NodeAvatarBinding::circle(0_u32, 16.0), NodeAvatarBinding::circle(1, 16.0)],
+    ///     &[snap(0, 0.0), snap(1, 300.0)],
+    /// );
+    /// world.insert_edge_joint(&0, &1, &EdgeJoint::default());
+    /// assert_eq!(world.set_spring_scale(0.5), 1);
+    /// assert_eq!(world.spring_scale(), 0.5);
+    /// assert_eq!(world.edge_joint(&0, &1), Some(EdgeJoint::default()), "the kind is unscaled");
+    /// ```
+    pub fn set_spring_scale(&mut self, scale: f32) -> usize {
+        let scale = finite_or(scale, 0.0).max(0.0);
+        if scale.to_bits() == self.spring_scale.to_bits() {
+            return 0;
+        }
+        self.spring_scale = scale;
+        let mut changed = 0;
+        for joint in &self.joints {
+            if !matches!(joint.kind, EdgeJoint::Spring { .. }) {
+                continue;
+            }
+            let (Some(&ia), Some(&ib)) = (self.index.get(&joint.a), self.index.get(&joint.b))
+            else {
+                continue;
+            };
+            let (ma, mb) = (self.slots[ia as usize].mass, self.slots[ib as usize].mass);
+            let built = scaled_spring(&joint.kind, scale);
+            if let (Some(data), Some(rapier)) = (
+                rapier_joint(&built, ma * mb / (ma + mb), self.params.dt),
+                self.impulse_joints.get_mut(joint.handle, false),
+            ) {
+                rapier.data = data;
+                changed += 1;
+            }
+        }
+        changed
+    }
+
+    /// The factor [`set_spring_scale`](Self::set_spring_scale) last set (1 by default).
+    pub fn spring_scale(&self) -> f32 {
+        self.spring_scale
     }
 
     /// Removes the joint between `a` and `b` (either order). Returns whether there was one.
@@ -800,12 +917,32 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     /// Whether the pair (either order) has a joint.
     pub fn contains_joint(&self, a: &N, b: &N) -> bool {
-        match (self.slot_of(a), self.slot_of(b)) {
-            (Some(ia), Some(ib)) => self
-                .joint_index
-                .contains_key(&joint_key(self.slots[ia].serial, self.slots[ib].serial)),
-            _ => false,
-        }
+        self.edge_joint(a, b).is_some()
+    }
+
+    /// The joint between `a` and `b` (either order) as it was built, before the
+    /// stiffness limit: with [`RapierLayoutConfig::degree_scaled_springs`](crate::RapierLayoutConfig::degree_scaled_springs)
+    /// a spring's share of the configured stiffness shows here. `None` without a joint.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, EdgeJoint, NodeAvatarBinding,
+    ///     NodeSnapshot, RapierSceneWorld};
+    /// let mut world = RapierSceneWorld::new();
+    /// let snap = |id, x| NodeSnapshot { id, position: Point2D::new(x, 0.0), radius: 16.0, pinned: false };
+    /// world.build_bodies(
+    ///     &[NodeAvatarBinding::circle(0_u32, 16.0), NodeAvatarBinding::circle(1, 16.0)],
+    ///     &[snap(0, 0.0), snap(1, 300.0)],
+    /// );
+    /// world.insert_edge_joint(&0, &1, &EdgeJoint::default());
+    /// assert_eq!(world.edge_joint(&1, &0), Some(EdgeJoint::default()));
+    /// assert_eq!(world.edge_joint(&0, &0), None);
+    /// ```
+    pub fn edge_joint(&self, a: &N, b: &N) -> Option<EdgeJoint> {
+        let (ia, ib) = (self.slot_of(a)?, self.slot_of(b)?);
+        let key = joint_key(self.slots[ia].serial, self.slots[ib].serial);
+        let &i = self.joint_index.get(&key)?;
+        Some(self.joints[i as usize].kind)
     }
 
     /// The node ids, in body insertion order (removals swap the last node into the gap).

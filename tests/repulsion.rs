@@ -6,7 +6,7 @@ mod common;
 use common::*;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
-    quality, CanvasSceneInput, Layout, ManyBody, RapierLayoutConfig, Repulsion,
+    quality, CanvasSceneInput, Layout, ManyBody, PhysicsMaterial, RapierLayoutConfig, Repulsion,
 };
 
 fn scene_points(name: &str) -> Vec<Point2D<f32>> {
@@ -107,7 +107,17 @@ fn repulsion_spreads_what_springs_alone_pack() {
 #[test]
 fn pinned_nodes_push_but_are_not_pushed() {
     let scene = CanvasSceneInput::new(vec![node(0_u32, 0.0, 0.0), node(1, 60.0, 0.0)], vec![]);
-    let mut host = Host::new(scene, RapierLayoutConfig::force_directed());
+    // The repulsion alone, run to its equilibrium: no cooling schedule to freeze the
+    // approach, and light damping so the node does not creep asleep far short of it.
+    let config = RapierLayoutConfig {
+        cooling: None,
+        material: PhysicsMaterial {
+            linear_damping: 2.0,
+            ..PhysicsMaterial::default()
+        },
+        ..RapierLayoutConfig::force_directed()
+    };
+    let mut host = Host::new(scene, config);
     host.extras.pinned.insert(0);
     host.frames(900);
     assert_eq!(

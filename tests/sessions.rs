@@ -4,7 +4,7 @@
 
 mod common;
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 use common::*;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
@@ -85,13 +85,23 @@ fn config() -> impl Strategy<Value = RapierLayoutConfig> {
             Just(TopologyUpdate::Rebuild)
         ],
         any::<bool>(),
+        any::<bool>(),
     )
         .prop_map(
-            |(edge_joint, topology_update, collisions)| RapierLayoutConfig {
-                edge_joint,
-                topology_update,
-                collisions,
-                ..Default::default()
+            |(edge_joint, topology_update, collisions, force_directed)| {
+                // The force-directed extras: many-body repulsion, springs shared by degree,
+                // a cooling schedule and firm contacts.
+                let base = if force_directed {
+                    RapierLayoutConfig::force_directed()
+                } else {
+                    RapierLayoutConfig::default()
+                };
+                RapierLayoutConfig {
+                    edge_joint,
+                    topology_update,
+                    collisions,
+                    ..base
+                }
             },
         )
 }
@@ -214,6 +224,7 @@ fn check(
         prop_assert!(ids.contains(id), "body for node {id}, which left the scene");
     }
     prop_assert_eq!(world.body_count(), world.node_ids().count());
+    check_joints(host, before)?;
     for n in &host.scene.nodes {
         if !valid(n.position) {
             continue;
@@ -241,6 +252,65 @@ fn check(
             );
         }
     }
+    Ok(())
+}
+
+/// Every modelled edge has the joint the configuration gives it; with degree-scaled
+/// springs, the share its ends' current degrees give it, however the topology got there.
+fn check_joints(host: &Host<u32>, before: &CanvasSceneInput<u32>) -> Result<(), TestCaseError> {
+    let world = host.layout.world().expect("a world");
+    let config = &host.layout.config;
+    let mut pairs: Vec<(u32, u32)> = before
+        .edges
+        .iter()
+        .filter(|e| e.source != e.target)
+        .filter(|e| world.contains_node(&e.source) && world.contains_node(&e.target))
+        .map(|e| (e.source.min(e.target), e.source.max(e.target)))
+        .collect();
+    pairs.sort_unstable();
+    pairs.dedup();
+    let mut degree: HashMap<u32, u32> = HashMap::new();
+    for &(a, b) in &pairs {
+        *degree.entry(a).or_default() += 1;
+        *degree.entry(b).or_default() += 1;
+    }
+    for &(a, b) in &pairs {
+        let expected = match config.edge_joint {
+            EdgeJoint::None => None,
+            EdgeJoint::Spring {
+                rest_length,
+                stiffness,
+                damping,
+            } if config.degree_scaled_springs => {
+                let share = degree[&a].min(degree[&b]) as f32;
+                Some(EdgeJoint::Spring {
+                    rest_length,
+                    stiffness: stiffness / share,
+                    damping: damping / share,
+                })
+            }
+            kind => Some(kind),
+        };
+        prop_assert_eq!(
+            world.edge_joint(&a, &b),
+            expected,
+            "edge {}-{} (degrees {}, {})",
+            a,
+            b,
+            degree[&a],
+            degree[&b]
+        );
+    }
+    prop_assert_eq!(
+        world.joint_count(),
+        if config.edge_joint == EdgeJoint::None {
+            0
+        } else {
+            pairs.len()
+        },
+        "joints for {} modelled edges",
+        pairs.len()
+    );
     Ok(())
 }
 

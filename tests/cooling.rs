@@ -1,0 +1,176 @@
+//! Cooling and the force-directed preset: every shipped graph comes to rest in bounded
+//! time without overlaps, stays exactly still once at rest, and wakes again (and
+//! settles again) when the user drags a node or the graph is edited.
+
+mod common;
+
+use common::*;
+use graph_canvas_layout::euclid::default::Point2D;
+use graph_canvas_layout::{quality, Layout, RapierLayoutConfig};
+
+/// d3-force stops after 300 ticks; the target is at most twice that.
+const SETTLE_BUDGET: usize = 600;
+
+/// Runs `host` until `is_converged`; returns the number of frames it took.
+fn settle(host: &mut Host<u32>, budget: usize) -> usize {
+    for frame in 1..=budget {
+        host.frame(FRAME);
+        if host.layout.is_converged(&host.state) {
+            return frame;
+        }
+    }
+    panic!(
+        "not at rest after {budget} frames (heat {:?})",
+        host.layout.heat()
+    );
+}
+
+#[test]
+fn every_shipped_graph_settles_within_twice_d3s_ticks_without_overlaps() {
+    for name in [
+        "karate",
+        "les_miserables",
+        "florentine",
+        "n200_e500",
+        "tree_1023",
+        "grid_30x30",
+    ] {
+        let mut host = Host::new(load_scene(name), RapierLayoutConfig::force_directed());
+        let frames = settle(&mut host, SETTLE_BUDGET);
+        let overlaps = quality::overlapping_pairs(&host.scene, 16.0, 0.5);
+        assert_eq!(
+            overlaps, 0,
+            "{name}: {overlaps} overlapping pairs after {frames} frames"
+        );
+        // At rest means still: nothing is reported for a further two seconds.
+        let before = positions(&host.scene);
+        for frame in 0..120 {
+            let deltas = host.frame(FRAME);
+            assert!(
+                deltas.is_empty(),
+                "{name}: {} nodes moved {frame} frames after rest",
+                deltas.len()
+            );
+        }
+        assert_eq!(before, positions(&host.scene), "{name}");
+        // Rest is a spread layout, not a frozen explosion or a blob: mean edge length
+        // within [rest length, 2.5 × rest length] (d3-force: 104 to 214 on these graphs).
+        let mean = quality::mean_edge_length(&host.scene).unwrap();
+        assert!(
+            (100.0..250.0).contains(&mean),
+            "{name}: mean edge length {mean} at rest"
+        );
+    }
+}
+
+#[test]
+fn heat_falls_over_the_schedule_and_stops_at_its_floor() {
+    let config = RapierLayoutConfig::force_directed();
+    let cooling = config.cooling.unwrap();
+    let mut host = Host::new(load_scene("florentine"), config);
+    host.frame(FRAME);
+    let first = host.layout.heat().unwrap();
+    host.frames(59);
+    let after_one_second = host.layout.heat().unwrap();
+    // Geometric decay: after t seconds, min_alpha^(t / duration).
+    let expected = cooling.min_alpha.powf(1.0 / cooling.duration);
+    assert!(
+        (after_one_second - expected).abs() < 1e-3,
+        "heat after 1 s: {after_one_second}, expected {expected}"
+    );
+    assert!(first > after_one_second, "{first} then {after_one_second}");
+    host.frames((cooling.duration * 60.0) as usize);
+    assert_eq!(host.layout.heat(), Some(cooling.min_alpha));
+    assert_eq!(
+        RapierLayoutConfig::default().cooling,
+        None,
+        "the physical default does not cool"
+    );
+}
+
+#[test]
+fn a_drag_reheats_the_layout_and_it_settles_again() {
+    let config = RapierLayoutConfig::force_directed();
+    let cooling = config.cooling.unwrap();
+    let mut host = Host::new(load_scene("les_miserables"), config);
+    settle(&mut host, SETTLE_BUDGET);
+    let grabbed = 11; // Valjean, the hub
+    let neighbour = 48;
+    let neighbour_before = host.pos(&neighbour);
+    host.extras.dragging.insert(grabbed);
+    let start = host.pos(&grabbed);
+    for k in 1..=20 {
+        host.set_pos(
+            &grabbed,
+            start + Point2D::new(15.0 * k as f32, 0.0).to_vector(),
+        );
+        host.frame(FRAME);
+        // Reheated to 1 before the call, then cooled over its frame.
+        let hot = cooling.cooled(1.0, FRAME);
+        assert_eq!(host.layout.heat(), Some(hot), "frame {k} of the drag");
+        assert!(!host.layout.is_converged(&host.state));
+    }
+    host.extras.dragging.clear();
+    // Asleep, the neighbour would not move at all; woken, its spring drags it along
+    // (a soft one: its share is 1 / its own degree).
+    let moved = dist(host.pos(&neighbour), neighbour_before);
+    assert!(
+        moved > 20.0,
+        "dragging the hub 300 units moved its neighbour only {moved}"
+    );
+    let frames = settle(&mut host, SETTLE_BUDGET);
+    assert!(
+        host.pos(&grabbed).x > start.x + 150.0,
+        "the hub went back to {:?} from {start:?}",
+        host.pos(&grabbed)
+    );
+    assert!(
+        frames > 60,
+        "settled after only {frames} frames: the drag did not reheat"
+    );
+}
+
+#[test]
+fn an_edit_reheats_without_a_rebuild() {
+    let mut host = Host::new(load_scene("karate"), RapierLayoutConfig::force_directed());
+    settle(&mut host, SETTLE_BUDGET);
+    let anchor = host.pos(&0);
+    host.scene
+        .nodes
+        .push(node(100, anchor.x + 5.0, anchor.y + 5.0));
+    host.scene.edges.push(edge(0, 100));
+    host.frame(FRAME);
+    assert_eq!(host.layout.rebuild_count(), 1);
+    assert_eq!(host.layout.patch_count(), 1);
+    let cooling = host.layout.config.cooling.unwrap();
+    assert_eq!(host.layout.heat(), Some(cooling.cooled(1.0, FRAME)));
+    settle(&mut host, SETTLE_BUDGET);
+    let gap = dist(host.pos(&100), host.pos(&0));
+    assert!(
+        (32.0..300.0).contains(&gap),
+        "the new leaf settled {gap} from its hub (rest length 100, radius 16 each)"
+    );
+    assert_eq!(quality::overlapping_pairs(&host.scene, 16.0, 0.5), 0);
+}
+
+#[test]
+fn switching_cooling_off_gives_the_springs_their_full_stiffness() {
+    let mut host = Host::new(
+        load_scene("florentine"),
+        RapierLayoutConfig::force_directed(),
+    );
+    settle(&mut host, SETTLE_BUDGET);
+    let scale = host.layout.world().unwrap().spring_scale();
+    assert!(
+        scale < 0.1,
+        "a cooled layout's springs are at {scale} of their stiffness"
+    );
+    host.layout.config.cooling = None;
+    host.frame(FRAME);
+    assert_eq!(host.layout.heat(), None);
+    // Exactly 1: the scale is set, not computed.
+    assert_eq!(
+        host.layout.world().unwrap().spring_scale().to_bits(),
+        1.0_f32.to_bits()
+    );
+}

@@ -12,9 +12,9 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::{
     ActiveEvents, BroadPhaseBvh, CCDSolver, ColliderBuilder, ColliderHandle, ColliderSet,
-    CollisionEvent, ImpulseJointHandle, ImpulseJointSet, IntegrationParameters, IslandManager,
-    MultibodyJointSet, NarrowPhase, PhysicsPipeline, RigidBodyBuilder, RigidBodyHandle,
-    RigidBodySet, RigidBodyType, SharedShape, SoftBodySet, Vector,
+    CollisionEvent, GenericJoint, ImpulseJointHandle, ImpulseJointSet, IntegrationParameters,
+    IslandManager, MultibodyJointSet, NarrowPhase, PhysicsPipeline, RigidBodyBuilder,
+    RigidBodyHandle, RigidBodySet, RigidBodyType, SharedShape, SoftBodySet, Vector,
 };
 
 use crate::bindings::{ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot};
@@ -385,12 +385,11 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         if self.joint_index.contains_key(&key) {
             return false;
         }
-        let reduced_mass = sa.mass * sb.mass / (sa.mass + sb.mass);
-        let built = scaled_spring(kind, self.spring_scale);
-        let Some(joint) = rapier_joint(&built, reduced_mass, self.params.dt) else {
+        let (body_a, body_b) = (sa.body, sb.body);
+        let Some(joint) = self.joint_data(ia, ib, kind) else {
             return false;
         };
-        let handle = self.impulse_joints.insert(sa.body, sb.body, joint, true);
+        let handle = self.impulse_joints.insert(body_a, body_b, joint, true);
         self.joint_index.insert(key, self.joints.len() as u32);
         self.joints.push(JointSlot {
             key,
@@ -432,16 +431,12 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
                 continue;
             }
             changed += 1;
-            let masses = (
+            let ends = (
                 self.index.get(&self.joints[i].a),
                 self.index.get(&self.joints[i].b),
             );
-            let built = match masses {
-                (Some(&ia), Some(&ib)) => {
-                    let (ma, mb) = (self.slots[ia as usize].mass, self.slots[ib as usize].mass);
-                    let built = scaled_spring(&kind, self.spring_scale);
-                    rapier_joint(&built, ma * mb / (ma + mb), self.params.dt)
-                }
+            let built = match ends {
+                (Some(&ia), Some(&ib)) => self.joint_data(ia, ib, &kind),
                 _ => None,
             };
             match built {
@@ -494,10 +489,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             else {
                 continue;
             };
-            let (ma, mb) = (self.slots[ia as usize].mass, self.slots[ib as usize].mass);
-            let built = scaled_spring(&joint.kind, scale);
             if let (Some(data), Some(rapier)) = (
-                rapier_joint(&built, ma * mb / (ma + mb), self.params.dt),
+                self.joint_data(ia, ib, &joint.kind),
                 self.impulse_joints.get_mut(joint.handle, false),
             ) {
                 rapier.data = data;
@@ -505,6 +498,15 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             }
         }
         changed
+    }
+
+    /// The rapier joint for `kind` between the bodies in slots `a` and `b`: springs
+    /// scaled by the current spring scale and capped for the bodies' reduced mass at
+    /// the current timestep.
+    fn joint_data(&self, a: u32, b: u32, kind: &EdgeJoint) -> Option<GenericJoint> {
+        let (ma, mb) = (self.slots[a as usize].mass, self.slots[b as usize].mass);
+        let built = scaled_spring(kind, self.spring_scale);
+        rapier_joint(&built, ma * mb / (ma + mb), self.params.dt)
     }
 
     /// The factor [`set_spring_scale`](Self::set_spring_scale) last set (1 by default).

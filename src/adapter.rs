@@ -126,6 +126,8 @@ pub struct RapierLayout<N> {
     fixed_dt: f32,
     /// The layout's heat under [`RapierLayoutConfig::cooling`], in `(0, 1]`.
     alpha: f32,
+    /// Simulated time the heat has spent at its floor since the last reheat.
+    cold_time: f32,
 }
 
 impl<N> std::fmt::Debug for RapierLayout<N> {
@@ -177,6 +179,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             recovered: Vec::new(),
             fixed_dt: DEFAULT_TIMESTEP,
             alpha: 1.0,
+            cold_time: 0.0,
         }
     }
 
@@ -377,6 +380,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         state.simulated_time += f64::from(plan.simulated());
         if let Some(cooling) = self.config.cooling {
             self.alpha = cooling.cooled(self.alpha, plan.simulated());
+            self.stop_when_cold(cooling.floor(), plan.simulated());
         }
         let (deltas, max_speed, awake) = self.sync_out(scene);
         self.track_rest(
@@ -887,6 +891,24 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 );
             }
             world.step(gravity);
+        }
+    }
+
+    /// The end of a cooling schedule: once the heat has stayed at its floor for
+    /// [`REST_TIME`], every dynamic body is put to sleep, velocity zeroed, like d3-force
+    /// stopping its simulation at `alphaMin`. Forces are a thousandth of their strength
+    /// by then, but in a large connected graph a few bodies jostling in contact would
+    /// otherwise keep the whole graph (one rapier island) awake for ever.
+    fn stop_when_cold(&mut self, floor: f32, simulated: f32) {
+        if self.alpha > floor {
+            self.cold_time = 0.0;
+            return;
+        }
+        self.cold_time += simulated;
+        if let Some(world) = self.world.as_mut() {
+            if self.cold_time >= REST_TIME && world.awake_body_count() > 0 {
+                world.sleep_dynamic_bodies();
+            }
         }
     }
 

@@ -974,6 +974,35 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         self.islands.num_active_bodies()
     }
 
+    /// Puts every awake dynamic body to sleep, at rest where it is; the next disturbance
+    /// (a drag, a teleport, a joint or contact with an awake body) wakes it. Returns how
+    /// many bodies were put to sleep.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::{Point2D, Vector2D}, NodeAvatarBinding,
+    ///     NodeSnapshot, RapierSceneWorld};
+    /// let mut world = RapierSceneWorld::new();
+    /// let snap = NodeSnapshot { id: 0_u32, position: Point2D::origin(), radius: 16.0, pinned: false };
+    /// world.build_bodies(&[NodeAvatarBinding::circle(0, 16.0)], &[snap]);
+    /// world.apply_impulse(&0, Vector2D::new(100.0, 0.0));
+    /// assert_eq!(world.sleep_dynamic_bodies(), 1);
+    /// world.step(Vector2D::zero());
+    /// assert_eq!(world.get_position(&0), Some(Point2D::origin()), "asleep, it did not fly");
+    /// assert_eq!(world.is_sleeping(&0), Some(true));
+    /// ```
+    pub fn sleep_dynamic_bodies(&mut self) -> usize {
+        let mut slept = 0;
+        for s in 0..self.slots.len() {
+            let body = self.body_at(s);
+            if body.is_dynamic() && !body.is_sleeping() {
+                self.body_at_mut(s).sleep();
+                slept += 1;
+            }
+        }
+        slept
+    }
+
     /// Number of dynamic bodies that are awake.
     pub fn awake_dynamic_count(&self) -> usize {
         self.bodies

@@ -372,6 +372,10 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             finite_or(state.gravity_x, 0.0),
             finite_or(state.gravity_y, 0.0),
         );
+        let awake_before = self
+            .world
+            .as_ref()
+            .map_or(0, RapierSceneWorld::awake_body_count);
         self.simulate(&plan, gravity);
         self.recovered.clear();
         if let Some(world) = self.world.as_mut() {
@@ -382,7 +386,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.alpha = cooling.cooled(self.alpha, plan.simulated());
             self.stop_when_cold(cooling.floor(), plan.simulated());
         }
-        let (deltas, max_speed, awake) = self.sync_out(scene);
+        let (deltas, max_speed, awake) = self.sync_out(scene, awake_before);
         self.track_rest(
             disturbed || !self.drives.is_empty(),
             max_speed,
@@ -747,6 +751,17 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             }
             let was_dragging = world.slots[s].dragging;
             let host = node.position;
+            let slot = &mut world.slots[s];
+            if slot.synced
+                && desired == Some(RigidBodyType::Dynamic)
+                && !dragging
+                && slot.told == host
+            {
+                // A free body the host left where it was told: nothing to sync, and no
+                // need to touch the body at all (the common case at rest).
+                slot.initial = host;
+                continue;
+            }
             // Read first: a mutable access marks the body as modified for rapier, which
             // then re-processes it (and may wake it) at the next step.
             let body = world.body_at(s);
@@ -762,6 +777,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                     }
                     let slot = &mut world.slots[s];
                     slot.dragging = false;
+                    slot.synced = false;
                     slot.initial = body_pos;
                     continue;
                 }
@@ -827,6 +843,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 disturbed = true;
             }
             slot.dragging = dragging;
+            slot.synced = desired == Some(RigidBodyType::Dynamic) && !dragging;
         }
         disturbed
     }
@@ -914,15 +931,25 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
 
     /// Pass 4. Returns the deltas, the fastest dynamic body's speed and how many dynamic
     /// bodies are awake.
-    fn sync_out(&mut self, scene: &CanvasSceneInput<N>) -> (DeltaMap<N>, f32, usize) {
+    /// `awake_before` is rapier's count of simulated bodies before the step: when it
+    /// was 0 and still is, nothing moved and no body needs reading.
+    fn sync_out(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        awake_before: usize,
+    ) -> (DeltaMap<N>, f32, usize) {
         let epsilon = self.config.delta_epsilon.max(0.0);
         let epsilon_sq = epsilon * epsilon;
-        let mut deltas = DeltaMap::with_capacity_and_hasher(scene.nodes.len(), IdHasher::default());
+        // Allocated on the first delta: a resting layout returns an empty map for free.
+        let mut deltas = DeltaMap::with_hasher(IdHasher::default());
         let mut max_speed_sq: f32 = 0.0;
         let mut awake = 0;
         let Some(world) = self.world.as_mut() else {
             return (deltas, 0.0, 0);
         };
+        if awake_before == 0 && world.awake_body_count() == 0 {
+            return (deltas, 0.0, 0);
+        }
         for (node, m) in scene.nodes.iter().zip(&self.matches) {
             if m.slot == NO_SLOT {
                 continue;
@@ -942,6 +969,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             if delta.square_length() > epsilon_sq && delta.is_finite() {
                 // The host adds the delta with the same f32 addition.
                 slot.told = slot.initial + delta;
+                if deltas.capacity() == 0 {
+                    deltas.reserve(scene.nodes.len());
+                }
                 deltas.insert(node.id.clone(), delta);
             }
         }

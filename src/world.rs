@@ -84,6 +84,9 @@ pub(crate) struct NodeSlot<N> {
     /// Inserted during this call: its body may sit off the host's position (coincident
     /// nodes are spread), which is not a host move.
     pub(crate) fresh: bool,
+    /// The last sync left this body dynamic and free (not dragged, pinned or frozen):
+    /// while the host keeps the position it was told, the next sync has nothing to do.
+    pub(crate) synced: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -327,6 +330,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             drag_position: position,
             drag_velocity: Vector2D::zero(),
             fresh: true,
+            synced: false,
         });
         self.next_serial += 1;
         true

@@ -214,6 +214,19 @@ fn presets(c: &mut Criterion) {
     }
 }
 
+/// `force_directed()` (repulsion, shared springs, firm contacts, cooling) while the
+/// graph unfolds: d3-force's tick on the same scenes is the yardstick (README).
+fn force_directed(c: &mut Criterion) {
+    for name in ["n200_e500", "n1000_e2500"] {
+        persistent(
+            c,
+            name,
+            RapierLayoutConfig::force_directed(),
+            "force_directed",
+        );
+    }
+}
+
 fn scaling(c: &mut Criterion) {
     for name in [
         "n1000_e2500",
@@ -250,7 +263,7 @@ fn large(c: &mut Criterion) {
 criterion_group! {
     name = small;
     config = Criterion::default().sample_size(30).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(4));
-    targets = headline, presets, scaling
+    targets = headline, presets, force_directed, scaling
 }
 criterion_group! {
     name = big;

@@ -235,8 +235,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             .is_some_and(|topology| topology.hash != self.topology_hash)
     }
 
-    /// The layout's heat under [`RapierLayoutConfig::cooling`]: 1 after the first build
-    /// or a disturbance, falling to [`Cooling::min_alpha`](crate::Cooling::min_alpha)
+    /// The layout's heat under [`RapierLayoutConfig::cooling`] after the last call: 1
+    /// at the first build, at least [`Cooling::reheat`](crate::Cooling::reheat) after a
+    /// disturbance, falling to [`Cooling::min_alpha`](crate::Cooling::min_alpha)
     /// over [`Cooling::duration`](crate::Cooling::duration). `None` without a schedule.
     ///
     /// # Example
@@ -250,7 +251,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     ///     layout.step(&scene, &mut state, 1.0 / 60.0, &Default::default(), &LayoutExtras::default());
     /// }
     /// let alpha = layout.heat().unwrap();
-    /// assert!(alpha < 0.5 && alpha > 0.1, "one second of a 5 s schedule: {alpha}");
+    /// assert!(alpha < 0.5 && alpha > 0.1, "one second of an 8 s schedule: {alpha}");
     /// ```
     pub fn heat(&self) -> Option<f32> {
         self.config.cooling.map(|_| self.alpha)
@@ -366,6 +367,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         if let Some(cooling) = self.config.cooling {
             if disturbed || !self.drives.is_empty() {
                 self.alpha = cooling.reheated(self.alpha);
+                // Also when the reheat cannot lift the heat off its floor: a disturbed
+                // layout gets half a second before it is stopped again.
+                self.cold_time = 0.0;
             }
         }
         let gravity = Vector2D::new(
@@ -623,8 +627,10 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         }
         self.world = Some(world);
         self.applied = Some(self.config.clone());
+        if self.rebuilds == 0 {
+            self.alpha = 1.0; // later builds are disturbances: they reheat
+        }
         self.rebuilds += 1;
-        self.alpha = 1.0;
     }
 
     /// Inserts and removes only what changed; untouched bodies keep their motion.
@@ -746,6 +752,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 if let ColliderSpec::Circle { radius: r } = world.slots[s].shape {
                     if r.to_bits() != radius.to_bits() {
                         world.set_shape_at(s, ColliderSpec::Circle { radius }, density);
+                        disturbed = true;
                     }
                 }
             }
@@ -871,6 +878,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         params.num_solver_iterations = iterations;
         params.num_internal_pgs_iterations = pgs_iterations;
         params.contact_softness = config.contact_softness.coefficients();
+        params.static_contact_softness = config.contact_softness.static_coefficients();
         let heat = match config.cooling {
             Some(_) => {
                 // Springs follow the heat in steps of 5 %: each re-tune touches every joint.

@@ -7,7 +7,8 @@
 //! [`Cooling::duration`], and spring stiffness and damping, repulsion and centre pull
 //! are all multiplied by it. Their ratio, and so the shape they balance at, stays the
 //! same; only the push toward it fades, and the material's damping brings the bodies to
-//! a stop, after which rapier puts them to sleep. Contacts are not scaled, so nodes
+//! a stop. Half a second after the heat reaches its floor every body is put to sleep,
+//! as d3-force stops at `alphaMin`. Contacts are not scaled, so nodes
 //! never end up overlapping. Any disturbance (a drag, a release, a host move, a
 //! topology change) heats the layout again to [`Cooling::reheat`].
 //!

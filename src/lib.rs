@@ -68,10 +68,10 @@
 //! **How fast can a node fly?** [`RapierLayoutConfig::max_speed`] (default 40,000 units
 //! per second) caps every body; faster throws fly at the cap.
 //!
-//! **Jitter at rest?** A resting layout reports nothing: bodies slower than
-//! [`RapierLayoutConfig::rest_speed`] (5 units/s) for 0.5 s fall asleep and stop
-//! exactly, and displacements under [`RapierLayoutConfig::delta_epsilon`] are not
-//! reported. Dense piles of disks pushed together by springs settle more slowly;
+//! **Jitter at rest?** A resting layout reports nothing: rapier puts bodies slower than
+//! 5 units/s (`0.05 × length_unit`) for 0.5 s to sleep and they stop exactly,
+//! [`Layout::is_converged`] waits for that, and displacements under
+//! [`RapierLayoutConfig::delta_epsilon`] are not reported. Dense piles of disks pushed together by springs settle more slowly;
 //! [`Accuracy::Precise`] resolves their contacts in fewer frames, and
 //! [`RapierLayoutConfig::force_directed`] keeps nodes apart in the first place.
 //!

@@ -152,6 +152,10 @@ pub struct RapierSceneWorld<N> {
     topology_hash: u64,
     /// Factor on every spring's stiffness and damping (a cooling layout's heat).
     spring_scale: f32,
+    /// The timestep joints are tuned for: the last [`set_timestep`](Self::set_timestep),
+    /// not the substep a call happens to run (a short frame must not stiffen springs
+    /// re-tuned during it).
+    joint_dt: f32,
 }
 
 impl<N: Clone + Eq + Hash> Default for RapierSceneWorld<N> {
@@ -224,6 +228,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             recovered: Vec::new(),
             topology_hash: 0,
             spring_scale: 1.0,
+            joint_dt: IntegrationParameters::default().dt,
         }
     }
 
@@ -510,7 +515,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     fn joint_data(&self, a: u32, b: u32, kind: &EdgeJoint) -> Option<GenericJoint> {
         let (ma, mb) = (self.slots[a as usize].mass, self.slots[b as usize].mass);
         let built = scaled_spring(kind, self.spring_scale);
-        rapier_joint(&built, ma * mb / (ma + mb), self.params.dt)
+        rapier_joint(&built, ma * mb / (ma + mb), self.joint_dt)
     }
 
     /// The factor [`set_spring_scale`](Self::set_spring_scale) last set (1 by default).
@@ -583,6 +588,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     pub fn set_timestep(&mut self, dt: f32) {
         if dt.is_finite() && dt > 0.0 {
             self.params.dt = dt;
+            self.joint_dt = dt;
         }
     }
 

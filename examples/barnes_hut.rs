@@ -9,12 +9,13 @@ use std::time::Instant;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{ManyBody, Repulsion, SceneFile};
 
+/// One force pass as the layout runs it: build, then every point's force.
 fn forces(tree: &mut ManyBody, points: &[Point2D<f32>], theta: f32) -> Vec<Vector2D<f32>> {
     let r = Repulsion::default();
     tree.build(points);
-    (0..points.len())
-        .map(|i| tree.force_on(i, r.strength, theta, r.min_distance))
-        .collect()
+    let mut out = Vec::new();
+    tree.forces(r.strength, theta, r.min_distance, |_| true, &mut out);
+    out
 }
 
 fn main() {

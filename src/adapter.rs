@@ -121,6 +121,7 @@ pub struct RapierLayout<N> {
     converged: bool,
     many_body: ManyBody,
     points: Vec<Point2D<f32>>,
+    forces: Vec<Vector2D<f32>>,
     recovered: Vec<N>,
     /// This call's fixed timestep; new joints are tuned for it.
     fixed_dt: f32,
@@ -176,6 +177,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             converged: false,
             many_body: ManyBody::default(),
             points: Vec::new(),
+            forces: Vec::new(),
             recovered: Vec::new(),
             fixed_dt: DEFAULT_TIMESTEP,
             alpha: 1.0,
@@ -910,7 +912,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 apply_repulsion(
                     world,
                     &mut self.many_body,
-                    &mut self.points,
+                    (&mut self.points, &mut self.forces),
                     &repulsion,
                     heat,
                 );
@@ -1041,7 +1043,7 @@ fn clamp_speed(v: Vector2D<f32>, max_speed: f32) -> Vector2D<f32> {
 fn apply_repulsion<N: Clone + Eq + Hash>(
     world: &mut RapierSceneWorld<N>,
     tree: &mut ManyBody,
-    points: &mut Vec<Point2D<f32>>,
+    (points, forces): (&mut Vec<Point2D<f32>>, &mut Vec<Vector2D<f32>>),
     repulsion: &crate::repulsion::Repulsion,
     heat: f32,
 ) {
@@ -1056,12 +1058,16 @@ fn apply_repulsion<N: Clone + Eq + Hash>(
     let min_distance = finite_or(repulsion.min_distance, 1.0).max(1e-3);
     let pull = finite_or(repulsion.center_pull, 0.0) * heat;
     let center = repulsion.center;
-    for (s, &point) in points.iter().enumerate() {
+    let pushed = |world: &RapierSceneWorld<N>, s: usize| {
         let body = world.body_at(s);
-        if !body.is_dynamic() || body.is_sleeping() {
+        body.is_dynamic() && !body.is_sleeping()
+    };
+    tree.forces(strength, theta, min_distance, |s| pushed(world, s), forces);
+    for (s, &point) in points.iter().enumerate() {
+        if !pushed(world, s) {
             continue;
         }
-        let mut f = tree.force_on(s, strength, theta, min_distance);
+        let mut f = forces[s];
         if center.x.is_finite() && center.y.is_finite() {
             f -= (point - center) * pull;
         }

@@ -136,3 +136,34 @@ fn pinned_nodes_push_but_are_not_pushed() {
         "free node settled at x = {x}, expected a little short of {expected}"
     );
 }
+
+#[test]
+fn one_pass_over_all_points_gives_each_point_its_own_query() {
+    let points = scene_points("n1000_e2500");
+    let r = Repulsion::default();
+    let mut tree = ManyBody::default();
+    tree.build(&points);
+    let mut all = Vec::new();
+    // Every third point wanted: the others stay zero.
+    tree.forces(
+        r.strength,
+        r.theta,
+        r.min_distance,
+        |i| i % 3 == 0,
+        &mut all,
+    );
+    assert_eq!(all.len(), points.len());
+    for (i, f) in all.iter().enumerate() {
+        let expected = if i % 3 == 0 {
+            tree.force_on(i, r.strength, r.theta, r.min_distance)
+        } else {
+            Vector2D::zero()
+        };
+        // The same walk in the same order: bit for bit.
+        assert_eq!(
+            (f.x.to_bits(), f.y.to_bits()),
+            (expected.x.to_bits(), expected.y.to_bits()),
+            "point {i}: pass {f:?} vs query {expected:?}"
+        );
+    }
+}

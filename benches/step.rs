@@ -224,6 +224,12 @@ fn force_directed(c: &mut Criterion) {
             RapierLayoutConfig::force_directed(),
             "force_directed",
         );
+        persistent(
+            c,
+            name,
+            RapierLayoutConfig::force_directed_fast(),
+            "force_directed_fast",
+        );
     }
 }
 
@@ -241,6 +247,13 @@ fn scaling(c: &mut Criterion) {
 }
 
 fn large(c: &mut Criterion) {
+    // The fastest force-directed setting on the largest scene, unfolding from the file.
+    persistent(
+        c,
+        "n10000_e25000",
+        RapierLayoutConfig::force_directed_fast(),
+        "force_directed_fast",
+    );
     for name in ["n5000_e12500", "n10000_e25000"] {
         let start = relaxed(name, 300);
         persistent_from(

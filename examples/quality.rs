@@ -3,7 +3,8 @@
 //! variation), overlapping node pairs, edge crossings, frames to settle, and the step
 //! time. `scripts/d3-quality.mjs` measures d3-force on the same scenes.
 //!
-//! Run with `cargo run --release --example quality [scene ...]`; any shipped scene may be
+//! Run with `cargo run --release --example quality [--fast] [scene ...]` (`--fast`:
+//! `RapierLayoutConfig::force_directed_fast()`); any shipped scene may be
 //! named (`n1000_e2500`, `n10000_e25000`). Overlaps and crossings are counted pairwise,
 //! so above 3,000 nodes or edges they are left out ("-"), as in the d3 script.
 
@@ -45,13 +46,15 @@ fn tune(config: &mut RapierLayoutConfig) {
 }
 
 fn main() {
-    let only: Vec<String> = std::env::args().skip(1).collect();
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let fast = args.iter().any(|a| a == "--fast");
+    let only: Vec<&String> = args.iter().filter(|a| *a != "--fast").collect();
     println!("| scene | nodes | edges | frames to settle | edge-length CV | mean edge | overlaps | crossings | µs per step |");
     println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
     let names: Vec<&str> = if only.is_empty() {
         SCENES.to_vec()
     } else {
-        only.iter().map(String::as_str).collect()
+        only.iter().map(|s| s.as_str()).collect()
     };
     for name in names {
         let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
@@ -59,7 +62,11 @@ fn main() {
         let mut scene = serde_json::from_str::<SceneFile>(&text)
             .expect("scene json")
             .into_scene();
-        let mut config = RapierLayoutConfig::force_directed();
+        let mut config = if fast {
+            RapierLayoutConfig::force_directed_fast()
+        } else {
+            RapierLayoutConfig::force_directed()
+        };
         tune(&mut config);
         let default_radius = config.default_radius;
         let mut layout = RapierLayout::new(config);

@@ -382,4 +382,25 @@ impl RapierLayoutConfig {
             ..defaults
         }
     }
+
+    /// [`force_directed`](Self::force_directed) at its fastest: [`Accuracy::Fast`] and no
+    /// colliders. Repulsion alone keeps nodes apart, so a few may overlap where springs
+    /// pull hard; in exchange the broad and narrow phases, which dominate the step of a
+    /// large graph, are gone. Measured on `n10000_e25000` (README): every 30-frame
+    /// window under 16 ms while the graph unfolds, at rest after 522 frames, where
+    /// `force_directed()` takes 60 ms per step.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{Accuracy, RapierLayoutConfig};
+    /// let config = RapierLayoutConfig::force_directed_fast();
+    /// assert!(!config.collisions && config.accuracy == Accuracy::Fast);
+    /// ```
+    pub fn force_directed_fast() -> Self {
+        Self {
+            accuracy: Accuracy::Fast,
+            collisions: false,
+            ..Self::force_directed()
+        }
+    }
 }

@@ -212,3 +212,21 @@ fn a_graph_stopped_at_the_end_of_its_schedule_wakes_for_a_drag() {
     let frames = settle(&mut host, SETTLE_BUDGET);
     assert!(frames > 60, "back at rest after only {frames} frames");
 }
+
+#[test]
+fn the_fast_variant_settles_a_thousand_nodes_with_few_overlaps() {
+    let mut host = Host::new(
+        load_scene("n1000_e2500"),
+        RapierLayoutConfig::force_directed_fast(),
+    );
+    let frames = settle(&mut host, SETTLE_BUDGET);
+    let mean = quality::mean_edge_length(&host.scene).unwrap();
+    assert!(
+        (100.0..350.0).contains(&mean),
+        "mean edge length {mean} at rest after {frames} frames"
+    );
+    // No colliders: repulsion alone keeps nodes apart. d3-force leaves 347 overlapping
+    // pairs on this graph; fewer than one per node is the bound here.
+    let overlaps = quality::overlapping_pairs(&host.scene, 16.0, 0.5);
+    assert!(overlaps < 1000, "{overlaps} overlapping pairs");
+}

@@ -441,7 +441,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.world = None;
             self.topology_hash = 0;
         } else if applied.edge_joint != self.config.edge_joint
-            || applied.degree_scaled_springs != self.config.degree_scaled_springs
+            || applied.spring_degree_exponent.to_bits()
+                != self.config.spring_degree_exponent.to_bits()
         {
             if let Some(world) = self.world.as_mut() {
                 world.clear_edge_joints();
@@ -695,7 +696,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 &edge_joint(degrees[a], degrees[b]),
             );
         }
-        if config.degree_scaled_springs {
+        if degree_exponent(&config).is_some() {
             // Springs whose ends changed degree take their new share.
             world.retune_edge_joints(|a, b| match (index_of.get(a), index_of.get(b)) {
                 (Some(&x), Some(&y)) => edge_joint(degrees[x], degrees[y]),
@@ -1003,23 +1004,34 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
 
 /// The joint `config` gives an edge whose ends have `da` and `db` distinct neighbours:
 /// [`RapierLayoutConfig::edge_joint`], with a spring's stiffness and damping divided by
-/// `min(da, db)` under [`RapierLayoutConfig::degree_scaled_springs`].
+/// `min(da, db)^exponent` ([`RapierLayoutConfig::spring_degree_exponent`]; unusable
+/// exponents count as 0).
 fn edge_joint_for(config: &RapierLayoutConfig, da: u32, db: u32) -> EdgeJoint {
-    match config.edge_joint {
-        EdgeJoint::Spring {
-            rest_length,
-            stiffness,
-            damping,
-        } if config.degree_scaled_springs => {
-            let share = da.min(db).max(1) as f32;
+    match (config.edge_joint, degree_exponent(config)) {
+        (
+            EdgeJoint::Spring {
+                rest_length,
+                stiffness,
+                damping,
+            },
+            Some(exponent),
+        ) => {
+            let share = (da.min(db).max(1) as f32).powf(exponent);
             EdgeJoint::Spring {
                 rest_length,
                 stiffness: stiffness / share,
                 damping: damping / share,
             }
         }
-        kind => kind,
+        (kind, _) => kind,
     }
+}
+
+/// [`RapierLayoutConfig::spring_degree_exponent`] when it scales anything: finite and
+/// not zero.
+fn degree_exponent(config: &RapierLayoutConfig) -> Option<f32> {
+    let exponent = config.spring_degree_exponent;
+    (exponent.is_finite() && exponent.abs() > 0.0).then_some(exponent)
 }
 
 /// The heat at which `config`'s cooling schedule stops (0 without one).

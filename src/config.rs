@@ -279,13 +279,17 @@ pub struct RapierLayoutConfig {
     /// Displacements shorter than this (world units) are left out of the returned map;
     /// they stay owed to the host and are reported once they add up. Default: `1e-4`.
     pub delta_epsilon: f32,
-    /// Divide each [`EdgeJoint::Spring`]'s stiffness by the smaller degree of its two
-    /// ends, as d3-force's link strength `1 / min(degree)`: a hub's many springs then
-    /// pull no harder in sum than a leaf's one, so hubs do not crush their
-    /// neighbourhoods and edge lengths spread less. Degrees count distinct neighbours;
-    /// a topology edit re-tunes the springs whose ends changed degree. Costs nothing per
-    /// step. Default: `false` ([`RapierLayoutConfig::force_directed`] turns it on).
-    pub degree_scaled_springs: bool,
+    /// Divides each [`EdgeJoint::Spring`]'s stiffness and damping by
+    /// `min(degree)^exponent`, the smaller degree of its two ends: a hub's many springs
+    /// then pull less hard in sum, so hubs do not crush their neighbourhoods. `0` keeps
+    /// every spring as configured; `1` is d3-force's link strength `1 / min(degree)`.
+    /// Physical springs pass their tension on whole (d3's links do not: its `bias`
+    /// moves the low-degree end most), so `1` leaves the middle of a tree or a dense
+    /// core too soft; on the shipped graphs 0.3–0.4 spreads edge lengths least. Degrees
+    /// count distinct neighbours; a topology edit re-tunes the springs whose ends
+    /// changed degree. Costs nothing per step. Default: `0.0`
+    /// ([`RapierLayoutConfig::force_directed`] uses `0.35`).
+    pub spring_degree_exponent: f32,
     /// A cooling schedule that brings the layout to rest in bounded time, or `None` to
     /// let it run to its force equilibrium. With a schedule, springs, repulsion and
     /// centre pull fade together over [`Cooling::duration`] after the last disturbance
@@ -318,7 +322,7 @@ impl Default for RapierLayoutConfig {
             rest_speed: 5.0,
             delta_epsilon: 1e-4,
             repulsion: None,
-            degree_scaled_springs: false,
+            spring_degree_exponent: 0.0,
             cooling: None,
             contact_softness: ContactSoftness::default(),
         }
@@ -332,11 +336,12 @@ impl RapierLayoutConfig {
     /// d3-force moves nodes in units per tick; at 60 ticks per second and the default
     /// node mass (density 0.005 × π 16² ≈ 4.0) its forces become:
     /// - links of distance 100 with strength `1 / min(degree)`: springs of rest length
-    ///   100, stiffness 7,200 divided by the smaller end degree
-    ///   ([`degree_scaled_springs`](Self::degree_scaled_springs)), no spring damping.
-    ///   7,200 is what a 1/60 s step resolves between two default nodes
-    ///   ([`max_resolved_stiffness`](crate::max_resolved_stiffness)), d3's link at full
-    ///   heat;
+    ///   100, stiffness 7,200 divided by `min(degree)^0.35`
+    ///   ([`spring_degree_exponent`](Self::spring_degree_exponent); physical springs
+    ///   pass tension on whole, so a weaker degree share than d3's spreads edge lengths
+    ///   less), no spring damping. 7,200 is what a 1/60 s step resolves between two
+    ///   default nodes ([`max_resolved_stiffness`](crate::max_resolved_stiffness)),
+    ///   d3's link at full heat;
     /// - many-body strength −30: [`Repulsion`] of strength 430,000 (`30 × m × 60²`),
     ///   theta 0.9, with a gentle centre pull;
     /// - velocity decay 0.4 per tick would be linear damping 40 per second; half of it,
@@ -351,7 +356,9 @@ impl RapierLayoutConfig {
     ///   of 7), and costs less.
     ///
     /// Every shipped graph comes to rest (every body asleep) within 9 s of simulated
-    /// time after the last disturbance. The damping is d3's: a throw stops within a few frames. For a
+    /// time after the last disturbance. Contacts dominate the step of large random
+    /// graphs while they unfold (160 ms per step at 10,000 nodes); for thousands of
+    /// nodes use [`force_directed_fast`](Self::force_directed_fast) (14 ms). The damping is d3's: a throw stops within a few frames. For a
     /// physical feel (coasting throws), start from [`RapierLayoutConfig::default`].
     ///
     /// # Example
@@ -373,7 +380,7 @@ impl RapierLayoutConfig {
                 ..defaults.material
             },
             repulsion: Some(Repulsion::default()),
-            degree_scaled_springs: true,
+            spring_degree_exponent: 0.35,
             cooling: Some(Cooling {
                 duration: 8.0,
                 ..Cooling::default()
@@ -388,11 +395,14 @@ impl RapierLayoutConfig {
     }
 
     /// [`force_directed`](Self::force_directed) without colliders: the fastest
-    /// force-directed setting. Repulsion alone keeps nodes apart, so some overlap where
-    /// springs pull hard; in exchange the broad and narrow phases, which dominate the
-    /// step of a large graph, are gone. Measured on `n10000_e25000` (README): every
-    /// 30-frame window under 16 ms while the graph unfolds and at rest after 522
-    /// frames, where `force_directed()` averages 52 ms per step.
+    /// force-directed setting, for graphs of thousands of nodes. Repulsion alone keeps
+    /// nodes apart, so some overlap where springs pull hard; d3's full degree share
+    /// ([`spring_degree_exponent`](Self::spring_degree_exponent) 1) keeps dense cores
+    /// from being pulled tighter (756 overlapping pairs on `n1000_e2500` against 1,839
+    /// at 0.35). In exchange the broad and narrow phases, which dominate the step of a
+    /// large graph, are gone. Measured on `n10000_e25000` (README): every 30-frame
+    /// window under 16 ms while the graph unfolds, at rest after 522 frames, where
+    /// `force_directed()` averages 160 ms per step.
     ///
     /// # Example
     /// ```
@@ -404,6 +414,7 @@ impl RapierLayoutConfig {
     pub fn force_directed_fast() -> Self {
         Self {
             collisions: false,
+            spring_degree_exponent: 1.0,
             ..Self::force_directed()
         }
     }

@@ -933,7 +933,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     }
 
     /// The joint between `a` and `b` (either order) as it was built, before the
-    /// stiffness limit: with [`RapierLayoutConfig::degree_scaled_springs`](crate::RapierLayoutConfig::degree_scaled_springs)
+    /// stiffness limit: with
+    /// [`RapierLayoutConfig::spring_degree_exponent`](crate::RapierLayoutConfig::spring_degree_exponent)
     /// a spring's share of the configured stiffness shows here. `None` without a joint.
     ///
     /// # Example

@@ -281,8 +281,8 @@ fn check_joints(host: &Host<u32>, before: &CanvasSceneInput<u32>) -> Result<(), 
                 rest_length,
                 stiffness,
                 damping,
-            } if config.degree_scaled_springs => {
-                let share = degree[&a].min(degree[&b]) as f32;
+            } if config.spring_degree_exponent > 0.0 => {
+                let share = (degree[&a].min(degree[&b]) as f32).powf(config.spring_degree_exponent);
                 Some(EdgeJoint::Spring {
                     rest_length,
                     stiffness: stiffness / share,

@@ -283,12 +283,12 @@ pub struct RapierLayoutConfig {
     /// `min(degree)^exponent`, the smaller degree of its two ends: a hub's many springs
     /// then pull less hard in sum, so hubs do not crush their neighbourhoods. `0` keeps
     /// every spring as configured; `1` is d3-force's link strength `1 / min(degree)`.
-    /// Physical springs pass their tension on whole (d3's links do not: its `bias`
-    /// moves the low-degree end most), so `1` leaves the middle of a tree or a dense
-    /// core too soft; on the shipped graphs 0.3–0.4 spreads edge lengths least. Degrees
-    /// count distinct neighbours; a topology edit re-tunes the springs whose ends
-    /// changed degree. Costs nothing per step. Default: `0.0`
-    /// ([`RapierLayoutConfig::force_directed`] uses `0.35`).
+    /// Lower exponents stiffen the springs between well-connected nodes: measured on the
+    /// shipped graphs, 0.35 brings the edge-length spread (CV) under d3-force's on five
+    /// of six, but it does so by pulling dense cores into piles of touching disks, and
+    /// random graphs unfold 2–3× slower (contacts). Degrees count distinct neighbours; a
+    /// topology edit re-tunes the springs whose ends changed degree. Costs nothing per
+    /// step. Default: `0.0` ([`RapierLayoutConfig::force_directed`] uses `1.0`).
     pub spring_degree_exponent: f32,
     /// A cooling schedule that brings the layout to rest in bounded time, or `None` to
     /// let it run to its force equilibrium. With a schedule, springs, repulsion and
@@ -336,12 +336,11 @@ impl RapierLayoutConfig {
     /// d3-force moves nodes in units per tick; at 60 ticks per second and the default
     /// node mass (density 0.005 × π 16² ≈ 4.0) its forces become:
     /// - links of distance 100 with strength `1 / min(degree)`: springs of rest length
-    ///   100, stiffness 7,200 divided by `min(degree)^0.35`
-    ///   ([`spring_degree_exponent`](Self::spring_degree_exponent); physical springs
-    ///   pass tension on whole, so a weaker degree share than d3's spreads edge lengths
-    ///   less), no spring damping. 7,200 is what a 1/60 s step resolves between two
-    ///   default nodes ([`max_resolved_stiffness`](crate::max_resolved_stiffness)),
-    ///   d3's link at full heat;
+    ///   100, stiffness 7,200 divided by the smaller end degree
+    ///   ([`spring_degree_exponent`](Self::spring_degree_exponent) 1), no spring
+    ///   damping. 7,200 is what a 1/60 s step resolves between two default nodes
+    ///   ([`max_resolved_stiffness`](crate::max_resolved_stiffness)), d3's link at full
+    ///   heat;
     /// - many-body strength −30: [`Repulsion`] of strength 430,000 (`30 × m × 60²`),
     ///   theta 0.9, with a gentle centre pull;
     /// - velocity decay 0.4 per tick would be linear damping 40 per second; half of it,
@@ -357,7 +356,7 @@ impl RapierLayoutConfig {
     ///
     /// Every shipped graph comes to rest (every body asleep) within 9 s of simulated
     /// time after the last disturbance. Contacts dominate the step of large random
-    /// graphs while they unfold (160 ms per step at 10,000 nodes); for thousands of
+    /// graphs while they unfold (52 ms per step at 10,000 nodes); for thousands of
     /// nodes use [`force_directed_fast`](Self::force_directed_fast) (14 ms). The damping is d3's: a throw stops within a few frames. For a
     /// physical feel (coasting throws), start from [`RapierLayoutConfig::default`].
     ///
@@ -380,7 +379,7 @@ impl RapierLayoutConfig {
                 ..defaults.material
             },
             repulsion: Some(Repulsion::default()),
-            spring_degree_exponent: 0.35,
+            spring_degree_exponent: 1.0,
             cooling: Some(Cooling {
                 duration: 8.0,
                 ..Cooling::default()
@@ -396,13 +395,11 @@ impl RapierLayoutConfig {
 
     /// [`force_directed`](Self::force_directed) without colliders: the fastest
     /// force-directed setting, for graphs of thousands of nodes. Repulsion alone keeps
-    /// nodes apart, so some overlap where springs pull hard; d3's full degree share
-    /// ([`spring_degree_exponent`](Self::spring_degree_exponent) 1) keeps dense cores
-    /// from being pulled tighter (756 overlapping pairs on `n1000_e2500` against 1,839
-    /// at 0.35). In exchange the broad and narrow phases, which dominate the step of a
-    /// large graph, are gone. Measured on `n10000_e25000` (README): every 30-frame
-    /// window under 16 ms while the graph unfolds, at rest after 522 frames, where
-    /// `force_directed()` averages 160 ms per step.
+    /// nodes apart, so some overlap where springs pull hard (756 pairs on
+    /// `n1000_e2500`; d3-force leaves 347). In exchange the broad and narrow phases,
+    /// which dominate the step of a large graph, are gone. Measured on `n10000_e25000`
+    /// (README): every 30-frame window under 16 ms while the graph unfolds, at rest
+    /// after 522 frames, where `force_directed()` averages 52 ms per step.
     ///
     /// # Example
     /// ```
@@ -414,7 +411,6 @@ impl RapierLayoutConfig {
     pub fn force_directed_fast() -> Self {
         Self {
             collisions: false,
-            spring_degree_exponent: 1.0,
             ..Self::force_directed()
         }
     }

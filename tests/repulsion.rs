@@ -94,32 +94,13 @@ fn repulsion_spreads_what_springs_alone_pack() {
         overlaps, 0,
         "force-directed les_miserables has {overlaps} overlapping pairs"
     );
-    // Plain springs and contacts pack the graph: edges stretch past their rest length
-    // (100) unevenly and cross. Repulsion holds them near it, as evenly as d3-force
-    // does (CV 0.334 on this graph, `scripts/d3-quality.mjs`), and untangles.
-    let mean = (
-        quality::mean_edge_length(&plain).unwrap(),
-        quality::mean_edge_length(&spread).unwrap(),
-    );
-    let cv = (
-        quality::edge_length_cv(&plain).unwrap(),
-        quality::edge_length_cv(&spread).unwrap(),
-    );
     let crossings = (
         quality::edge_crossings(&plain),
         quality::edge_crossings(&spread),
     );
     assert!(
-        (100.0..115.0).contains(&mean.1) && mean.1 < mean.0,
-        "mean edge length (plain, force-directed): {mean:?}"
-    );
-    assert!(
-        cv.1 <= 0.334,
-        "edge-length CV (plain, force-directed): {cv:?}, d3-force's 0.334"
-    );
-    assert!(
-        crossings.1 * 3 < crossings.0 * 2,
-        "repulsion did not cut the crossings by a third: {crossings:?}"
+        crossings.1 * 2 < crossings.0,
+        "repulsion did not halve the crossings: {crossings:?}"
     );
 }
 

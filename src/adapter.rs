@@ -19,6 +19,7 @@ use serde::{Deserialize, Serialize};
 use crate::bindings::{ColliderSpec, NodeAvatarBinding, SceneBodyKind};
 use crate::config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, TopologyUpdate};
 use crate::events::SceneEvent;
+use crate::joints::scaled_spring;
 use crate::layout::{DeltaMap, IdHasher, Layout, LayoutExtras};
 use crate::repulsion::ManyBody;
 use crate::scene::{CanvasNode, CanvasSceneInput, CanvasViewport};
@@ -366,8 +367,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.apply_config_changes();
         let mut disturbed = self.sync_topology(scene, extras);
         disturbed |= self.sync_in(scene, extras, plan.frame_dt);
+        disturbed |= !self.drives.is_empty();
         if let Some(cooling) = self.config.cooling {
-            if disturbed || !self.drives.is_empty() {
+            if disturbed {
                 self.alpha = cooling.reheated(self.alpha);
                 // Also when the reheat cannot lift the heat off its floor: a disturbed
                 // layout gets half a second before it is stopped again.
@@ -393,12 +395,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.stop_when_cold(cooling.floor(), plan.simulated());
         }
         let (deltas, max_speed, awake) = self.sync_out(scene, awake_before);
-        self.track_rest(
-            disturbed || !self.drives.is_empty(),
-            max_speed,
-            awake,
-            plan.simulated(),
-        );
+        self.track_rest(disturbed, max_speed, awake, plan.simulated());
         deltas
     }
 
@@ -625,7 +622,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             world.insert_edge_joint(
                 &scene.nodes[a].id,
                 &scene.nodes[b].id,
-                &self.edge_joint_for(degrees[a], degrees[b]),
+                &edge_joint_for(&self.config, degrees[a], degrees[b]),
             );
         }
         self.world = Some(world);
@@ -704,11 +701,6 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             });
         }
         self.patches += 1;
-    }
-
-    /// The joint for an edge whose ends have `da` and `db` distinct neighbours.
-    fn edge_joint_for(&self, da: u32, db: u32) -> EdgeJoint {
-        edge_joint_for(&self.config, da, db)
     }
 
     /// The body type a node should have this call.
@@ -883,10 +875,10 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         params.contact_softness = config.contact_softness.coefficients();
         params.static_contact_softness = config.contact_softness.static_coefficients();
         let heat = match config.cooling {
-            Some(_) => {
+            Some(cooling) => {
                 // Springs follow the heat in steps of 5 %: each re-tune touches every joint.
                 let scale = world.spring_scale();
-                let at_floor = self.alpha <= cooling_floor(config);
+                let at_floor = self.alpha <= cooling.floor();
                 if (self.alpha - scale).abs() > 0.05 * scale || at_floor {
                     world.set_spring_scale(self.alpha); // a no-op when already there
                 }
@@ -1007,23 +999,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
 /// `min(da, db)^exponent` ([`RapierLayoutConfig::spring_degree_exponent`]; unusable
 /// exponents count as 0).
 fn edge_joint_for(config: &RapierLayoutConfig, da: u32, db: u32) -> EdgeJoint {
-    match (config.edge_joint, degree_exponent(config)) {
-        (
-            EdgeJoint::Spring {
-                rest_length,
-                stiffness,
-                damping,
-            },
-            Some(exponent),
-        ) => {
+    match degree_exponent(config) {
+        Some(exponent) => {
             let share = (da.min(db).max(1) as f32).powf(exponent);
-            EdgeJoint::Spring {
-                rest_length,
-                stiffness: stiffness / share,
-                damping: damping / share,
-            }
+            scaled_spring(&config.edge_joint, |x| x / share)
         }
-        (kind, _) => kind,
+        None => config.edge_joint,
     }
 }
 
@@ -1032,11 +1013,6 @@ fn edge_joint_for(config: &RapierLayoutConfig, da: u32, db: u32) -> EdgeJoint {
 fn degree_exponent(config: &RapierLayoutConfig) -> Option<f32> {
     let exponent = config.spring_degree_exponent;
     (exponent.is_finite() && exponent.abs() > 0.0).then_some(exponent)
-}
-
-/// The heat at which `config`'s cooling schedule stops (0 without one).
-fn cooling_floor(config: &RapierLayoutConfig) -> f32 {
-    config.cooling.map_or(0.0, |c| c.floor())
 }
 
 /// `v` shortened to `max_speed` (no cap when `max_speed` is not positive).

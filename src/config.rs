@@ -357,8 +357,9 @@ impl RapierLayoutConfig {
     /// Every shipped graph comes to rest (every body asleep) within 9 s of simulated
     /// time after the last disturbance. Contacts dominate the step of large random
     /// graphs while they unfold (52 ms per step at 10,000 nodes); for thousands of
-    /// nodes use [`force_directed_fast`](Self::force_directed_fast) (14 ms). The damping is d3's: a throw stops within a few frames. For a
-    /// physical feel (coasting throws), start from [`RapierLayoutConfig::default`].
+    /// nodes use [`force_directed_fast`](Self::force_directed_fast) (14 ms). The damping
+    /// is d3's: a throw stops within a few frames. For a physical feel (coasting
+    /// throws), start from [`RapierLayoutConfig::default`].
     ///
     /// # Example
     /// ```

@@ -41,9 +41,9 @@ pub fn max_resolved_stiffness(reduced_mass: f32, dt: f32) -> f32 {
     }
 }
 
-/// `kind` with a spring's stiffness and damping multiplied by `scale`; other kinds as
-/// they are.
-pub(crate) fn scaled_spring(kind: &EdgeJoint, scale: f32) -> EdgeJoint {
+/// `kind` with `scale` applied to a spring's stiffness and damping; other kinds as they
+/// are.
+pub(crate) fn scaled_spring(kind: &EdgeJoint, scale: impl Fn(f32) -> f32) -> EdgeJoint {
     match *kind {
         EdgeJoint::Spring {
             rest_length,
@@ -51,8 +51,8 @@ pub(crate) fn scaled_spring(kind: &EdgeJoint, scale: f32) -> EdgeJoint {
             damping,
         } => EdgeJoint::Spring {
             rest_length,
-            stiffness: stiffness * scale,
-            damping: damping * scale,
+            stiffness: scale(stiffness),
+            damping: scale(damping),
         },
         other => other,
     }

@@ -511,10 +511,10 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     /// The rapier joint for `kind` between the bodies in slots `a` and `b`: springs
     /// scaled by the current spring scale and capped for the bodies' reduced mass at
-    /// the current timestep.
+    /// the joint timestep.
     fn joint_data(&self, a: u32, b: u32, kind: &EdgeJoint) -> Option<GenericJoint> {
         let (ma, mb) = (self.slots[a as usize].mass, self.slots[b as usize].mass);
-        let built = scaled_spring(kind, self.spring_scale);
+        let built = scaled_spring(kind, |x| x * self.spring_scale);
         rapier_joint(&built, ma * mb / (ma + mb), self.joint_dt)
     }
 

@@ -21,6 +21,7 @@ use crate::config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, TopologyUpdat
 use crate::events::SceneEvent;
 use crate::joints::scaled_spring;
 use crate::layout::{DeltaMap, IdHasher, Layout, LayoutExtras};
+use crate::link_bias::LinkBias;
 use crate::repulsion::ManyBody;
 use crate::scene::{CanvasNode, CanvasSceneInput, CanvasViewport};
 use crate::timestep::{StepPlan, DEFAULT_TIMESTEP};
@@ -121,6 +122,7 @@ pub struct RapierLayout<N> {
     calm_time: f32,
     converged: bool,
     many_body: ManyBody,
+    link_bias: LinkBias,
     points: Vec<Point2D<f32>>,
     forces: Vec<Vector2D<f32>>,
     recovered: Vec<N>,
@@ -177,6 +179,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             calm_time: 0.0,
             converged: false,
             many_body: ManyBody::default(),
+            link_bias: LinkBias::default(),
             points: Vec::new(),
             forces: Vec::new(),
             recovered: Vec::new(),
@@ -421,8 +424,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             || applied.collisions != self.config.collisions
             || applied.contact_events != self.config.contact_events
             || applied.default_radius.to_bits() != self.config.default_radius.to_bits();
-        if applied.repulsion.is_some() && self.config.repulsion.is_none() {
-            // Forces stay on bodies until reset: drop the last repulsion.
+        if body_forces_on(applied) && !body_forces_on(&self.config) {
+            // Forces stay on bodies until reset: drop the last repulsion and bias.
             if let Some(world) = self.world.as_mut() {
                 world.reset_forces();
             }
@@ -861,6 +864,22 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         } else {
             1.0
         };
+        let mut contact_softness = config.contact_softness;
+        let heat = match config.cooling {
+            Some(cooling) => {
+                // Springs follow the heat in steps of 5 %: each re-tune touches every joint.
+                let target = cooling.spring_scale(self.alpha);
+                let scale = world.spring_scale();
+                let at_floor = self.alpha <= cooling.floor();
+                if (target - scale).abs() > 0.05 * scale || at_floor {
+                    world.set_spring_scale(target); // a no-op when already there
+                }
+                let cold = contact_softness.coefficients().natural_frequency;
+                contact_softness.natural_frequency = cooling.contact_frequency(cold, self.alpha);
+                self.alpha
+            }
+            None => 1.0,
+        };
         let params = world.integration_parameters_mut();
         params.dt = plan.substep_dt;
         params.length_unit = length_unit;
@@ -872,20 +891,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let (iterations, pgs_iterations, _) = config.accuracy.settings();
         params.num_solver_iterations = iterations;
         params.num_internal_pgs_iterations = pgs_iterations;
-        params.contact_softness = config.contact_softness.coefficients();
-        params.static_contact_softness = config.contact_softness.static_coefficients();
-        let heat = match config.cooling {
-            Some(cooling) => {
-                // Springs follow the heat in steps of 5 %: each re-tune touches every joint.
-                let scale = world.spring_scale();
-                let at_floor = self.alpha <= cooling.floor();
-                if (self.alpha - scale).abs() > 0.05 * scale || at_floor {
-                    world.set_spring_scale(self.alpha); // a no-op when already there
-                }
-                world.spring_scale()
-            }
-            None => 1.0,
-        };
+        params.contact_softness = contact_softness.coefficients();
+        params.static_contact_softness = contact_softness.static_coefficients();
         for k in 0..plan.substeps {
             if !self.drives.is_empty() {
                 let t = (k + 1) as f32 / plan.substeps as f32;
@@ -901,12 +908,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                         .set_next_kinematic_translation(Vector::new(target.x, target.y));
                 }
             }
-            if let Some(repulsion) = config.repulsion {
-                apply_repulsion(
+            if body_forces_on(config) {
+                apply_body_forces(
                     world,
-                    &mut self.many_body,
+                    (&mut self.many_body, &mut self.link_bias),
                     (&mut self.points, &mut self.forces),
-                    &repulsion,
+                    config,
                     heat,
                 );
             }
@@ -1025,14 +1032,19 @@ fn clamp_speed(v: Vector2D<f32>, max_speed: f32) -> Vector2D<f32> {
     }
 }
 
-/// Sets every awake dynamic body's force to its many-body repulsion plus centre pull.
-/// Every body (pinned and dragged ones too) pushes; only dynamic bodies are pushed.
-/// Skipped while nothing is awake, so a resting layout stays cheap.
-fn apply_repulsion<N: Clone + Eq + Hash>(
+/// Whether `config` puts forces on bodies every substep: repulsion or a link bias.
+fn body_forces_on(config: &RapierLayoutConfig) -> bool {
+    config.repulsion.is_some() || finite_or(config.link_bias, 0.0) > 0.0
+}
+
+/// Sets every awake dynamic body's force to its many-body repulsion plus centre pull
+/// plus link bias. Every body (pinned and dragged ones too) pushes; only dynamic bodies
+/// are pushed. Skipped while nothing is awake, so a resting layout stays cheap.
+fn apply_body_forces<N: Clone + Eq + Hash>(
     world: &mut RapierSceneWorld<N>,
-    tree: &mut ManyBody,
+    (tree, link_bias): (&mut ManyBody, &mut LinkBias),
     (points, forces): (&mut Vec<Point2D<f32>>, &mut Vec<Vector2D<f32>>),
-    repulsion: &crate::repulsion::Repulsion,
+    config: &RapierLayoutConfig,
     heat: f32,
 ) {
     if world.awake_body_count() == 0 {
@@ -1040,23 +1052,34 @@ fn apply_repulsion<N: Clone + Eq + Hash>(
     }
     points.clear();
     points.extend((0..world.slots.len()).map(|s| world.position_at(s)));
-    tree.build(points);
-    let strength = finite_or(repulsion.strength, 0.0) * heat;
-    let theta = finite_or(repulsion.theta, 0.0).max(0.0);
-    let min_distance = finite_or(repulsion.min_distance, 1.0).max(1e-3);
-    let pull = finite_or(repulsion.center_pull, 0.0) * heat;
-    let center = repulsion.center;
     let pushed = |world: &RapierSceneWorld<N>, s: usize| {
         let body = world.body_at(s);
         body.is_dynamic() && !body.is_sleeping()
     };
-    tree.forces(strength, theta, min_distance, |s| pushed(world, s), forces);
+    let mut pull = 0.0;
+    let mut center = Point2D::origin();
+    match &config.repulsion {
+        Some(repulsion) => {
+            tree.build(points);
+            let strength = finite_or(repulsion.strength, 0.0) * heat;
+            let theta = finite_or(repulsion.theta, 0.0).max(0.0);
+            let min_distance = finite_or(repulsion.min_distance, 1.0).max(1e-3);
+            pull = finite_or(repulsion.center_pull, 0.0) * heat;
+            center = repulsion.center;
+            tree.forces(strength, theta, min_distance, |s| pushed(world, s), forces);
+        }
+        None => {
+            forces.clear();
+            forces.resize(points.len(), Vector2D::zero());
+        }
+    }
+    link_bias.add_forces(world, config.link_bias, points, forces);
     for (s, &point) in points.iter().enumerate() {
         if !pushed(world, s) {
             continue;
         }
         let mut f = forces[s];
-        if center.x.is_finite() && center.y.is_finite() {
+        if center.x.is_finite() && center.y.is_finite() && pull != 0.0 {
             f -= (point - center) * pull;
         }
         if f.is_finite() {

@@ -283,12 +283,14 @@ pub struct RapierLayoutConfig {
     /// `min(degree)^exponent`, the smaller degree of its two ends: a hub's many springs
     /// then pull less hard in sum, so hubs do not crush their neighbourhoods. `0` keeps
     /// every spring as configured; `1` is d3-force's link strength `1 / min(degree)`.
-    /// Lower exponents stiffen the springs between well-connected nodes: measured on the
-    /// shipped graphs, 0.35 brings the edge-length spread (CV) under d3-force's on five
-    /// of six, but it does so by pulling dense cores into piles of touching disks, and
-    /// random graphs unfold 2–3× slower (contacts). Degrees count distinct neighbours; a
-    /// topology edit re-tunes the springs whose ends changed degree. Costs nothing per
-    /// step. Default: `0.0` ([`RapierLayoutConfig::force_directed`] uses `1.0`).
+    /// Lower exponents stiffen the springs between well-connected nodes, which physical
+    /// springs need more than d3's links (a subtree's whole pull reaches its root edge):
+    /// 0.6 with the other `force_directed()` settings narrows the edge-length spread
+    /// (CV) on `tree_1023` from 0.68 to 0.58; lower still pulls dense cores into piles of
+    /// touching disks, compacts the layout and makes large random graphs unfold slower
+    /// (contacts). Degrees count distinct neighbours; a topology edit re-tunes the
+    /// springs whose ends changed degree. Costs nothing per step. Default: `0.0`
+    /// ([`RapierLayoutConfig::force_directed`] uses `0.6`).
     pub spring_degree_exponent: f32,
     /// A cooling schedule that brings the layout to rest in bounded time, or `None` to
     /// let it run to its force equilibrium. With a schedule, springs, repulsion and
@@ -302,6 +304,20 @@ pub struct RapierLayoutConfig {
     /// Default: [`ContactSoftness::default`], rapier's 30 Hz, ζ = 10
     /// ([`RapierLayoutConfig::force_directed`] uses 240 Hz, ζ = 1).
     pub contact_softness: ContactSoftness,
+    /// How unevenly a spring pulls its two ends, from 0 to 1. At 0 a spring is a
+    /// physical one: equal and opposite pulls. At 1 it shares its pull like d3-force's
+    /// link bias: each end takes a part proportional to the *other* end's degree (twice
+    /// the spring force in total, as before), so a leaf is drawn to its hub harder than
+    /// the hub to the leaf, and hubs are not dragged about by their many leaves. The
+    /// difference is an extra force on each end, applied with the body forces every
+    /// substep; it does not conserve momentum (the centre pull of [`Repulsion`] keeps
+    /// the graph in place). With the other `force_directed()` settings, 1 takes the
+    /// edge-length CV of `les_miserables` from 0.35 to 0.31 and of `karate` from 0.21 to
+    /// 0.19.
+    /// Costs one pass over the springs per substep. Clamped to `[0, 1]` (higher gains
+    /// are explicit forces stiffer than the step resolves); not finite counts as 0.
+    /// Default: `0.0` ([`RapierLayoutConfig::force_directed`] uses `1.0`).
+    pub link_bias: f32,
 }
 
 impl Default for RapierLayoutConfig {
@@ -325,6 +341,7 @@ impl Default for RapierLayoutConfig {
             spring_degree_exponent: 0.0,
             cooling: None,
             contact_softness: ContactSoftness::default(),
+            link_bias: 0.0,
         }
     }
 }
@@ -336,11 +353,14 @@ impl RapierLayoutConfig {
     /// d3-force moves nodes in units per tick; at 60 ticks per second and the default
     /// node mass (density 0.005 × π 16² ≈ 4.0) its forces become:
     /// - links of distance 100 with strength `1 / min(degree)`: springs of rest length
-    ///   100, stiffness 7,200 divided by the smaller end degree
-    ///   ([`spring_degree_exponent`](Self::spring_degree_exponent) 1), no spring
+    ///   100, stiffness 7,200 divided by `min(degree)^0.6`
+    ///   ([`spring_degree_exponent`](Self::spring_degree_exponent) 0.6), no spring
     ///   damping. 7,200 is what a 1/60 s step resolves between two default nodes
     ///   ([`max_resolved_stiffness`](crate::max_resolved_stiffness)), d3's link at full
-    ///   heat;
+    ///   heat. d3's full share (exponent 1) leaves hub edges too soft here, because
+    ///   physical springs pass a subtree's whole pull on to its root edge;
+    /// - d3's link bias, the end with fewer neighbours pulled harder
+    ///   ([`link_bias`](Self::link_bias) 1);
     /// - many-body strength −30: [`Repulsion`] of strength 430,000 (`30 × m × 60²`),
     ///   theta 0.9, with a gentle centre pull;
     /// - velocity decay 0.4 per tick would be linear damping 40 per second; half of it,
@@ -348,15 +368,18 @@ impl RapierLayoutConfig {
     /// - alpha decay: a [`Cooling`] schedule that scales springs and repulsion together,
     ///   over 8 s (d3 takes 5 s; the longer schedule untangles trees and grids further
     ///   before they freeze);
-    /// - collide at the node radius: firm contacts ([`ContactSoftness`] 240 Hz, ζ = 1),
-    ///   which keep the stiff springs from pressing nodes into each other;
+    /// - collide at the node radius: contacts that firm up as the layout cools, from
+    ///   5 Hz at full heat ([`Cooling::hot_contact_frequency`]), soft enough for nodes to
+    ///   slip past each other while the graph unfolds (d3's collide is weak next to
+    ///   its other forces early on), to 240 Hz, ζ = 1 ([`ContactSoftness`]) at rest,
+    ///   firm enough that no overlap remains;
     /// - one solver iteration ([`Accuracy::Fast`]), like d3's single pass per force: on
     ///   the shipped graphs it spreads edge lengths less than two iterations do (on 5
     ///   of 7), and costs less.
     ///
     /// Every shipped graph comes to rest (every body asleep) within 9 s of simulated
     /// time after the last disturbance. Contacts dominate the step of large random
-    /// graphs while they unfold (52 ms per step at 10,000 nodes); for thousands of
+    /// graphs while they unfold (92 ms per step at 10,000 nodes); for thousands of
     /// nodes use [`force_directed_fast`](Self::force_directed_fast) (14 ms). The damping
     /// is d3's: a throw stops within a few frames. For a physical feel (coasting
     /// throws), start from [`RapierLayoutConfig::default`].
@@ -380,11 +403,13 @@ impl RapierLayoutConfig {
                 ..defaults.material
             },
             repulsion: Some(Repulsion::default()),
-            spring_degree_exponent: 1.0,
+            spring_degree_exponent: 0.6,
             cooling: Some(Cooling {
                 duration: 8.0,
+                hot_contact_frequency: Some(5.0),
                 ..Cooling::default()
             }),
+            link_bias: 1.0,
             contact_softness: ContactSoftness {
                 natural_frequency: 240.0,
                 damping_ratio: 1.0,
@@ -394,13 +419,15 @@ impl RapierLayoutConfig {
         }
     }
 
-    /// [`force_directed`](Self::force_directed) without colliders: the fastest
-    /// force-directed setting, for graphs of thousands of nodes. Repulsion alone keeps
-    /// nodes apart, so some overlap where springs pull hard (756 pairs on
-    /// `n1000_e2500`; d3-force leaves 347). In exchange the broad and narrow phases,
-    /// which dominate the step of a large graph, are gone. Measured on `n10000_e25000`
-    /// (README): every 30-frame window under 16 ms while the graph unfolds, at rest
-    /// after 522 frames, where `force_directed()` averages 52 ms per step.
+    /// [`force_directed`](Self::force_directed) without colliders, with d3's full
+    /// degree share (spring exponent 1) and no link bias: the fastest force-directed
+    /// setting, for graphs of thousands of nodes. Repulsion alone keeps nodes apart, so
+    /// some overlap where springs pull hard (783 pairs on `n1000_e2500`; d3-force leaves
+    /// 347); the stiffer hub springs and the bias of `force_directed()` would press
+    /// twice as many together without contacts. In exchange the broad and narrow
+    /// phases, which dominate the step of a large graph, are gone. Measured on
+    /// `n10000_e25000` (README): under 16 ms per step while the graph unfolds, where
+    /// `force_directed()` averages 92 ms.
     ///
     /// # Example
     /// ```
@@ -412,6 +439,8 @@ impl RapierLayoutConfig {
     pub fn force_directed_fast() -> Self {
         Self {
             collisions: false,
+            spring_degree_exponent: 1.0,
+            link_bias: 0.0,
             ..Self::force_directed()
         }
     }

@@ -97,6 +97,7 @@ mod cooling;
 mod events;
 mod joints;
 mod layout;
+mod link_bias;
 pub mod quality;
 mod repulsion;
 mod scene;

@@ -20,7 +20,7 @@ use rapier2d::prelude::{
 use crate::bindings::{ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot};
 use crate::config::EdgeJoint;
 use crate::events::{CollisionCollector, SceneEvent};
-use crate::joints::{rapier_joint, scaled_spring};
+use crate::joints::{max_resolved_stiffness, rapier_joint, scaled_spring};
 use crate::layout::{DeltaMap, IdHasher};
 
 /// Displacements shorter than this are left out of [`RapierSceneWorld::read_positions`].
@@ -156,6 +156,9 @@ pub struct RapierSceneWorld<N> {
     /// not the substep a call happens to run (a short frame must not stiffen springs
     /// re-tuned during it).
     joint_dt: f32,
+    /// Bumped by every change to bodies, joints, masses or the joint timestep, so caches
+    /// over them (the link bias) know when to rebuild.
+    version: u64,
 }
 
 impl<N: Clone + Eq + Hash> Default for RapierSceneWorld<N> {
@@ -229,6 +232,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             topology_hash: 0,
             spring_scale: 1.0,
             joint_dt: IntegrationParameters::default().dt,
+            version: 0,
         }
     }
 
@@ -338,6 +342,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             synced: false,
         });
         self.next_serial += 1;
+        self.version += 1;
         true
     }
 
@@ -347,6 +352,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         let Some(slot_index) = self.index.remove(node) else {
             return false;
         };
+        self.version += 1;
         let slot_index = slot_index as usize;
         let removed = self.slots.swap_remove(slot_index);
         let serial = removed.serial;
@@ -407,6 +413,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             b: b.clone(),
             kind: *kind,
         });
+        self.version += 1;
         true
     }
 
@@ -440,6 +447,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
                 continue;
             }
             changed += 1;
+            self.version += 1;
             let ends = (
                 self.index.get(&self.joints[i].a),
                 self.index.get(&self.joints[i].b),
@@ -523,6 +531,35 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         self.spring_scale
     }
 
+    /// Every spring joint as `(slot a, slot b, rest length, stiffness, stiffness cap)`,
+    /// in joint order: the stiffness as inserted (before the spring scale), the cap what
+    /// the joint timestep resolves for the two bodies. Valid until
+    /// [`version`](Self::version) changes.
+    pub(crate) fn springs(&self) -> impl Iterator<Item = (usize, usize, f32, f32, f32)> + '_ {
+        self.joints.iter().filter_map(|joint| {
+            let EdgeJoint::Spring {
+                rest_length,
+                stiffness,
+                ..
+            } = joint.kind
+            else {
+                return None;
+            };
+            let (a, b) = (
+                *self.index.get(&joint.a)? as usize,
+                *self.index.get(&joint.b)? as usize,
+            );
+            let (ma, mb) = (self.slots[a].mass, self.slots[b].mass);
+            let cap = max_resolved_stiffness(ma * mb / (ma + mb), self.joint_dt);
+            Some((a, b, rest_length, stiffness, cap))
+        })
+    }
+
+    /// A counter bumped by every change to bodies, joints, masses or the joint timestep.
+    pub(crate) fn version(&self) -> u64 {
+        self.version
+    }
+
     /// Removes the joint between `a` and `b` (either order). Returns whether there was one.
     pub fn remove_edge_joint(&mut self, a: &N, b: &N) -> bool {
         let (Some(&ia), Some(&ib)) = (self.index.get(a), self.index.get(b)) else {
@@ -542,6 +579,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     }
 
     fn remove_joint_at(&mut self, i: usize, remove_from_rapier: bool) {
+        self.version += 1;
         let removed = self.joints.swap_remove(i);
         self.joint_index.remove(&removed.key);
         if remove_from_rapier {
@@ -567,6 +605,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     /// Removes every joint, keeping the bodies and their motion.
     pub fn clear_edge_joints(&mut self) {
+        self.version += 1;
         for joint in self.joints.drain(..) {
             self.impulse_joints.remove(joint.handle, true);
         }
@@ -588,6 +627,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     pub fn set_timestep(&mut self, dt: f32) {
         if dt.is_finite() && dt > 0.0 {
             self.params.dt = dt;
+            self.version += 1;
             self.joint_dt = dt;
         }
     }
@@ -1025,6 +1065,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// Gives a node a new shape in place (radius edits), keeping its motion; its mass
     /// follows the new area.
     pub(crate) fn set_shape_at(&mut self, slot: usize, shape: ColliderSpec, density: f32) {
+        self.version += 1;
         let shape = sanitize_shape(shape);
         let mass = body_mass(shape, density);
         let s = &mut self.slots[slot];

@@ -132,6 +132,9 @@ pub struct RapierLayout<N> {
     alpha: f32,
     /// Simulated time the heat has spent at its floor since the last reheat.
     cold_time: f32,
+    /// Set by the cold stop: the world is not stepped until a disturbance, as d3-force
+    /// stops its timer.
+    halted: bool,
 }
 
 impl<N> std::fmt::Debug for RapierLayout<N> {
@@ -186,6 +189,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             fixed_dt: DEFAULT_TIMESTEP,
             alpha: 1.0,
             cold_time: 0.0,
+            halted: false,
         }
     }
 
@@ -371,6 +375,15 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let mut disturbed = self.sync_topology(scene, extras);
         disturbed |= self.sync_in(scene, extras, plan.frame_dt);
         disturbed |= !self.drives.is_empty();
+        if disturbed || self.config.cooling.is_none() {
+            self.halted = false;
+        }
+        if self.halted {
+            // Cooled and stopped: nothing moves until the next disturbance.
+            state.simulated_time += f64::from(plan.simulated());
+            self.converged = true;
+            return DeltaMap::default();
+        }
         if let Some(cooling) = self.config.cooling {
             if disturbed {
                 self.alpha = cooling.reheated(self.alpha);
@@ -399,6 +412,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         }
         let (deltas, max_speed, awake) = self.sync_out(scene, awake_before);
         self.track_rest(disturbed, max_speed, awake, plan.simulated());
+        self.converged |= self.halted;
         deltas
     }
 
@@ -409,6 +423,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.cached_edges.clear();
         self.converged = false;
         self.calm_time = 0.0;
+        self.halted = false;
     }
 
     /// Config changes that the world's structure depends on drop it (rebuilt this call);
@@ -420,6 +435,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         if *applied == self.config {
             return;
         }
+        // A new configuration may move what was at rest.
+        self.halted = false;
         let structural = applied.material != self.config.material
             || applied.collisions != self.config.collisions
             || applied.contact_events != self.config.contact_events
@@ -922,10 +939,11 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     }
 
     /// The end of a cooling schedule: once the heat has stayed at its floor for
-    /// [`REST_TIME`], every dynamic body is put to sleep, velocity zeroed, like d3-force
-    /// stopping its simulation at `alphaMin`. Forces are a thousandth of their strength
-    /// by then, but in a large connected graph a few bodies jostling in contact would
-    /// otherwise keep the whole graph (one rapier island) awake for ever.
+    /// [`REST_TIME`], every dynamic body is halted (velocity zeroed) and the world is not
+    /// stepped again until a disturbance, like d3-force stopping its simulation at
+    /// `alphaMin`. Forces are a thousandth of their strength by then, but in a large
+    /// connected graph a few bodies jostling in contact would otherwise keep the whole
+    /// graph (one rapier island) awake for ever.
     fn stop_when_cold(&mut self, floor: f32, simulated: f32) {
         if self.alpha > floor {
             self.cold_time = 0.0;
@@ -933,8 +951,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         }
         self.cold_time += simulated;
         if let Some(world) = self.world.as_mut() {
-            if self.cold_time >= REST_TIME && world.awake_body_count() > 0 {
-                world.sleep_dynamic_bodies();
+            if self.cold_time >= REST_TIME {
+                world.halt_dynamic_bodies();
+                self.halted = true;
             }
         }
     }

@@ -1025,9 +1025,15 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         self.islands.num_active_bodies()
     }
 
-    /// Puts every awake dynamic body to sleep, at rest where it is; the next disturbance
-    /// (a drag, a teleport, a joint or contact with an awake body) wakes it. Returns how
-    /// many bodies were put to sleep.
+    /// Stops every dynamic body where it is: velocity zeroed and added forces cleared,
+    /// without waking anything. Returns how many dynamic bodies there are. A halted body
+    /// moves again only if something pushes it in a later [`step`](Self::step) (a joint,
+    /// a contact, gravity): [`RapierLayout`](crate::RapierLayout) halts a cooled layout
+    /// and then stops stepping it until a disturbance.
+    ///
+    /// Rapier's own `RigidBody::sleep` is not used for this: it flags the body asleep
+    /// without taking its island out of the simulation, so joints and gravity kept moving
+    /// the flagged bodies while contacts between them were skipped.
     ///
     /// # Example
     /// ```
@@ -1037,21 +1043,21 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// let snap = NodeSnapshot { id: 0_u32, position: Point2D::origin(), radius: 16.0, pinned: false };
     /// world.build_bodies(&[NodeAvatarBinding::circle(0, 16.0)], &[snap]);
     /// world.apply_impulse(&0, Vector2D::new(100.0, 0.0));
-    /// assert_eq!(world.sleep_dynamic_bodies(), 1);
+    /// assert_eq!(world.halt_dynamic_bodies(), 1);
     /// world.step(Vector2D::zero());
-    /// assert_eq!(world.get_position(&0), Some(Point2D::origin()), "asleep, it did not fly");
-    /// assert_eq!(world.is_sleeping(&0), Some(true));
+    /// assert_eq!(world.get_position(&0), Some(Point2D::origin()), "halted, it did not fly");
     /// ```
-    pub fn sleep_dynamic_bodies(&mut self) -> usize {
-        let mut slept = 0;
+    pub fn halt_dynamic_bodies(&mut self) -> usize {
+        let mut halted = 0;
         for s in 0..self.slots.len() {
-            let body = self.body_at(s);
-            if body.is_dynamic() && !body.is_sleeping() {
-                self.body_at_mut(s).sleep();
-                slept += 1;
+            let body = self.body_at_mut(s);
+            if body.is_dynamic() {
+                body.set_linvel(Vector::ZERO, false);
+                body.reset_forces(false);
+                halted += 1;
             }
         }
-        slept
+        halted
     }
 
     /// Number of dynamic bodies that are awake.

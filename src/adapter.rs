@@ -337,8 +337,9 @@ impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
     /// True when the layout is at rest: a world exists, no dynamic body moved faster
     /// than [`RapierLayoutConfig::rest_speed`] for [`REST_TIME`] seconds of simulated
     /// time, nothing (a drag, a release, a host move, a topology change) disturbed it
-    /// meanwhile, and every dynamic body is asleep: once true, calls report no motion
-    /// until something disturbs the layout.
+    /// meanwhile, and every dynamic body is asleep; or a [`Cooling`](crate::Cooling)
+    /// schedule has ended and halted the world. Once true, calls report no motion until
+    /// something disturbs the layout.
     fn is_converged(&self, _state: &RapierLayoutState) -> bool {
         self.world.is_some() && self.converged
     }

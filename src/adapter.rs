@@ -33,6 +33,9 @@ use crate::world::{finite_or, RapierSceneWorld, WorldOptions};
 /// [`RapierLayoutConfig::rest_speed`] before [`Layout::is_converged`] says so; the same
 /// time rapier waits before putting a body to sleep.
 pub const REST_TIME: f32 = 0.5;
+/// Host moves of kinematic and fixed bodies per call that each wake the sleeping bodies
+/// in their path; beyond them, every sleeping body is woken once.
+const MAX_SWEEPS: usize = 16;
 
 /// State the host keeps for a [`RapierLayout`] between frames.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -135,6 +138,10 @@ pub struct RapierLayout<N> {
     /// Set by the cold stop: the world is not stepped until a disturbance, as d3-force
     /// stops its timer.
     halted: bool,
+    /// The first unfolding: from the first build until the heat first reaches its floor
+    /// (or the layout rests), when [`Cooling::first_contact_heat`](crate::Cooling) and
+    /// [`Cooling::hot_contact_frequency`](crate::Cooling) apply.
+    unfolding: bool,
 }
 
 impl<N> std::fmt::Debug for RapierLayout<N> {
@@ -190,6 +197,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             alpha: 1.0,
             cold_time: 0.0,
             halted: false,
+            unfolding: false,
         }
     }
 
@@ -407,12 +415,25 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.recovered.extend(world.take_recovered_nodes());
         }
         state.simulated_time += f64::from(plan.simulated());
-        if let Some(cooling) = self.config.cooling {
-            self.alpha = cooling.cooled(self.alpha, plan.simulated());
-            self.stop_when_cold(cooling.floor(), plan.simulated());
+        match self.config.cooling {
+            Some(cooling) => {
+                self.alpha = cooling.cooled(self.alpha, plan.simulated());
+                self.stop_when_cold(cooling.floor(), plan.simulated());
+                if self.alpha <= cooling.floor() {
+                    self.end_unfolding();
+                }
+            }
+            None => {
+                self.end_unfolding();
+            }
         }
         let (deltas, max_speed, awake) = self.sync_out(scene, awake_before);
         self.track_rest(disturbed, max_speed, awake, plan.simulated());
+        if self.converged && self.end_unfolding() {
+            // At rest before the heat let contacts in: rest again once any overlap they
+            // find is parted.
+            self.converged = false;
+        }
         self.converged |= self.halted;
         deltas
     }
@@ -612,6 +633,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     fn build_world(&mut self, scene: &CanvasSceneInput<N>, topology: &Topology) {
         let mut world = RapierSceneWorld::with_options(self.world_options());
         world.set_timestep(self.fixed_dt);
+        // Contacts stay out of the first unfolding until the heat lets them in.
+        world.set_contacts_enabled(!(self.unfolding || self.rebuilds == 0));
         let mut spread = CoincidenceSpreader::default();
         for &i in &topology.nodes {
             let node = &scene.nodes[i];
@@ -650,6 +673,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.applied = Some(self.config.clone());
         if self.rebuilds == 0 {
             self.alpha = 1.0; // later builds are disturbances: they reheat
+            self.unfolding = true;
         }
         self.rebuilds += 1;
     }
@@ -751,6 +775,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let max_speed = self.config.max_speed;
         let check_drags = !extras.dragging.is_empty();
         let mut disturbed = false;
+        // Host-moved kinematic and fixed bodies this call (see `wake_bodies_near_sweep`).
+        let mut sweeps = 0_usize;
         for (i, node) in scene.nodes.iter().enumerate() {
             let m = self.matches[i];
             if m.slot == NO_SLOT {
@@ -835,6 +861,15 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                         disturbed = true;
                     }
                     if body_pos != host {
+                        // Rapier does not wake a sleeping body that a kinematic or fixed
+                        // body is moved into. Past a few such moves, one O(n) pass wakes
+                        // everything instead of one pass per move.
+                        sweeps += 1;
+                        if sweeps <= MAX_SWEEPS {
+                            world.wake_bodies_near_sweep(s, body_pos, host);
+                        } else if sweeps == MAX_SWEEPS + 1 {
+                            world.wake_dynamic_bodies();
+                        }
                         if kind == RigidBodyType::Fixed {
                             world
                                 .body_at_mut(s)
@@ -871,6 +906,22 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         disturbed
     }
 
+    /// Ends the first unfolding: contacts in (if they were left out) and firm from here
+    /// on, so interactions always push. Returns whether contacts were let in.
+    fn end_unfolding(&mut self) -> bool {
+        if !self.unfolding {
+            return false;
+        }
+        self.unfolding = false;
+        match self.world.as_mut() {
+            Some(world) if !world.contacts_enabled() => {
+                world.set_contacts_enabled(true);
+                true
+            }
+            _ => false,
+        }
+    }
+
     /// Pass 3.
     fn simulate(&mut self, plan: &StepPlan, gravity: Vector2D<f32>) {
         let config = &self.config;
@@ -892,12 +943,25 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 if (target - scale).abs() > 0.05 * scale || at_floor {
                     world.set_spring_scale(target); // a no-op when already there
                 }
-                let cold = contact_softness.coefficients().natural_frequency;
-                contact_softness.natural_frequency = cooling.contact_frequency(cold, self.alpha);
+                if self.unfolding {
+                    let cold = contact_softness.coefficients().natural_frequency;
+                    contact_softness.natural_frequency =
+                        cooling.contact_frequency(cold, self.alpha);
+                }
                 self.alpha
             }
             None => 1.0,
         };
+        if self.unfolding && !world.contacts_enabled() {
+            // Never below the floor, which the heat would not reach.
+            let gate = config.cooling.and_then(|cooling| {
+                let gate = cooling.first_contact_heat.filter(|gate| gate.is_finite())?;
+                Some(gate.max(cooling.floor()))
+            });
+            if gate.is_none_or(|gate| heat <= gate) {
+                world.set_contacts_enabled(true);
+            }
+        }
         let params = world.integration_parameters_mut();
         params.dt = plan.substep_dt;
         params.length_unit = length_unit;

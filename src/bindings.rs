@@ -71,6 +71,14 @@ impl ColliderSpec {
             ColliderSpec::Rect { half_extents } => 4.0 * half_extents.x * half_extents.y,
         }
     }
+
+    /// The radius of the smallest disk around the shape's centre that holds it.
+    pub fn bounding_radius(&self) -> f32 {
+        match *self {
+            ColliderSpec::Circle { radius } => radius,
+            ColliderSpec::Rect { half_extents } => half_extents.length(),
+        }
+    }
 }
 
 /// How rapier treats a node's body.

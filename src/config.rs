@@ -286,7 +286,7 @@ pub struct RapierLayoutConfig {
     /// Lower exponents stiffen the springs between well-connected nodes, which physical
     /// springs need more than d3's links (a subtree's whole pull reaches its root edge):
     /// 0.6 with the other `force_directed()` settings narrows the edge-length spread
-    /// (CV) on `tree_1023` from 0.68 to 0.58; lower still pulls dense cores into piles of
+    /// (CV) on `tree_1023` from 0.60 to 0.52; lower still pulls dense cores into piles of
     /// touching disks, compacts the layout and makes large random graphs unfold slower
     /// (contacts). Degrees count distinct neighbours; a topology edit re-tunes the
     /// springs whose ends changed degree. Costs nothing per step. Default: `0.0`
@@ -312,8 +312,8 @@ pub struct RapierLayoutConfig {
     /// difference is an extra force on each end, applied with the body forces every
     /// substep; it does not conserve momentum (the centre pull of [`Repulsion`] keeps
     /// the graph in place). With the other `force_directed()` settings, 1 takes the
-    /// edge-length CV of `les_miserables` from 0.35 to 0.31 and of `karate` from 0.21 to
-    /// 0.19.
+    /// edge-length CV of `karate` from 0.19 to 0.17 and of `les_miserables` from 0.31 to
+    /// 0.29.
     /// Costs one pass over the springs per substep. Clamped to `[0, 1]` (higher gains
     /// are explicit forces stiffer than the step resolves); not finite counts as 0.
     /// Default: `0.0` ([`RapierLayoutConfig::force_directed`] uses `1.0`).
@@ -367,24 +367,26 @@ impl RapierLayoutConfig {
     ///   20, lets tangles slip free before the layout freezes;
     /// - alpha decay: a [`Cooling`] schedule over 8 s (d3 takes 5 s; the longer schedule
     ///   untangles trees and grids further before they freeze) that scales repulsion by
-    ///   the heat and springs by `heat^0.8` ([`Cooling::spring_exponent`]), so edges draw
+    ///   the heat and springs by `heat^0.7` ([`Cooling::spring_exponent`]), so edges draw
     ///   toward their rest length as the layout cools;
-    /// - collide at the node radius: contacts that firm up as the layout cools, from
-    ///   5 Hz at full heat ([`Cooling::hot_contact_frequency`]), soft enough for nodes to
-    ///   slip past each other while the graph unfolds (d3's collide is weak next to
-    ///   its other forces early on), to 240 Hz, ζ = 1 ([`ContactSoftness`]) at rest,
-    ///   firm enough that no overlap remains;
+    /// - collide at the node radius: firm contacts (240 Hz, ζ = 1, [`ContactSoftness`])
+    ///   that no spring presses through. On the first unfolding only, they are left out
+    ///   until the heat falls to 0.3 ([`Cooling::first_contact_heat`]) and then firm up
+    ///   from soft ([`Cooling::hot_contact_frequency`] 5 Hz): a fresh scatter collapsing
+    ///   into thousands of contact pairs would cost most of the step (d3's collide, too,
+    ///   is weak next to its other forces early on). Later reheats keep them firm, so a
+    ///   drag always pushes;
     /// - two solver iterations ([`Accuracy::Balanced`]): at the end of the schedule the
     ///   springs press a large graph together, and one iteration leaves up to a hundred
-    ///   slightly overlapping pairs on `n1000_e2500` where two leave at most eight, at
-    ///   no measurable cost on `n10000_e25000` (better-resolved contacts make fewer
-    ///   pairs).
+    ///   slightly overlapping pairs on `n1000_e2500` where two leave none, and on
+    ///   `n10000_e25000` two are cheaper (45 against 68 ms per step: better-resolved
+    ///   contacts make fewer pairs).
     ///
     /// Every shipped graph comes to rest (every body asleep, or halted at the end of the
     /// schedule) within 9 s of simulated
     /// time after the last disturbance. Contacts dominate the step of large random
-    /// graphs while they unfold (92 ms per step at 10,000 nodes); for thousands of
-    /// nodes use [`force_directed_fast`](Self::force_directed_fast) (14 ms). The damping
+    /// graphs (45 ms per step at 10,000 nodes); for thousands of nodes
+    /// [`force_directed_fast`](Self::force_directed_fast) takes 14 ms. The damping
     /// is d3's: a throw stops within a few frames. For a physical feel (coasting
     /// throws), start from [`RapierLayoutConfig::default`].
     ///
@@ -410,8 +412,9 @@ impl RapierLayoutConfig {
             spring_degree_exponent: 0.6,
             cooling: Some(Cooling {
                 duration: 8.0,
-                spring_exponent: 0.8,
+                spring_exponent: 0.7,
                 hot_contact_frequency: Some(5.0),
+                first_contact_heat: Some(0.3),
                 ..Cooling::default()
             }),
             link_bias: 1.0,
@@ -432,7 +435,7 @@ impl RapierLayoutConfig {
     /// twice as many together without contacts. In exchange the broad and narrow
     /// phases, which dominate the step of a large graph, are gone. Measured on
     /// `n10000_e25000` (README): under 16 ms per step while the graph unfolds, where
-    /// `force_directed()` averages 92 ms.
+    /// `force_directed()` averages 45 ms.
     ///
     /// # Example
     /// ```

@@ -159,6 +159,9 @@ pub struct RapierSceneWorld<N> {
     /// Bumped by every change to bodies, joints, masses or the joint timestep, so caches
     /// over them (the link bias) know when to rebuild.
     version: u64,
+    /// Whether colliders take part in the simulation (see
+    /// [`set_contacts_enabled`](RapierSceneWorld::set_contacts_enabled)).
+    contacts_enabled: bool,
 }
 
 impl<N: Clone + Eq + Hash> Default for RapierSceneWorld<N> {
@@ -233,6 +236,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             spring_scale: 1.0,
             joint_dt: IntegrationParameters::default().dt,
             version: 0,
+            contacts_enabled: true,
         }
     }
 
@@ -318,6 +322,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
                 .friction(finite_or(material.friction, 0.0).max(0.0))
                 .restitution(finite_or(material.restitution, 0.0).clamp(0.0, 1.0))
                 .active_events(events)
+                .enabled(self.contacts_enabled)
                 .build();
             self.colliders
                 .insert_with_parent(collider, body, &mut self.bodies)
@@ -1058,6 +1063,110 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             }
         }
         halted
+    }
+
+    /// Turns contacts between nodes off or on, keeping the colliders: off, the broad and
+    /// narrow phases skip them (and report no contact events), so nodes pass through
+    /// each other. Turning them on wakes every body, so overlaps made meanwhile are
+    /// parted. Nodes inserted meanwhile follow the setting. O(n) when it changes, free
+    /// otherwise.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::{Point2D, Vector2D}, NodeAvatarBinding,
+    ///     NodeSnapshot, RapierSceneWorld};
+    /// let mut world = RapierSceneWorld::new();
+    /// let snap = |id, x| NodeSnapshot { id, position: Point2D::new(x, 0.0), radius: 16.0, pinned: false };
+    /// world.build_bodies(
+    ///     &[NodeAvatarBinding::circle(0_u32, 16.0), NodeAvatarBinding::circle(1, 16.0)],
+    ///     &[snap(0, 0.0), snap(1, 10.0)],
+    /// );
+    /// world.set_contacts_enabled(false);
+    /// world.step(Vector2D::zero());
+    /// assert!(world.read_positions().is_empty(), "without contacts the overlap stays");
+    /// world.set_contacts_enabled(true);
+    /// world.step(Vector2D::zero());
+    /// assert_eq!(world.read_positions().len(), 2, "contacts push the pair apart");
+    /// ```
+    pub fn set_contacts_enabled(&mut self, enabled: bool) {
+        if enabled == self.contacts_enabled {
+            return;
+        }
+        self.contacts_enabled = enabled;
+        for slot in &self.slots {
+            if let Some(collider) = slot.collider.and_then(|c| self.colliders.get_mut(c)) {
+                collider.set_enabled(enabled);
+                if enabled {
+                    // A body asleep in an overlap would not notice its new contacts.
+                    if let Some(body) = self.bodies.get_mut(slot.body) {
+                        body.wake_up(true);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Whether contacts take part in the simulation; see
+    /// [`set_contacts_enabled`](Self::set_contacts_enabled).
+    pub fn contacts_enabled(&self) -> bool {
+        self.contacts_enabled
+    }
+
+    /// Wakes every sleeping dynamic body within reach of the node in `slot` as it moves
+    /// from `from` to `to` (its bounding disk swept along the segment, plus a tenth of
+    /// the two radii). A kinematic or fixed body that the host moves into a sleeping
+    /// body does not wake it in rapier, so without this a dragged node passed through
+    /// nodes at rest. Returns how many bodies were woken. O(n).
+    pub(crate) fn wake_bodies_near_sweep(
+        &mut self,
+        slot: usize,
+        from: Point2D<f32>,
+        to: Point2D<f32>,
+    ) -> usize {
+        let reach = self.slots[slot].shape.bounding_radius();
+        let segment = to - from;
+        let length_sq = segment.square_length();
+        let mut woken = 0;
+        for s in 0..self.slots.len() {
+            if s == slot {
+                continue;
+            }
+            let handle = self.slots[s].body;
+            let Some(body) = self.bodies.get(handle) else {
+                continue;
+            };
+            if !(body.is_dynamic() && body.is_sleeping()) {
+                continue;
+            }
+            let p = self.position_at(s);
+            let t = if length_sq > 0.0 {
+                ((p - from).dot(segment) / length_sq).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            let closest = from + segment * t;
+            let within = 1.1 * (reach + self.slots[s].shape.bounding_radius());
+            if (p - closest).square_length() <= within * within {
+                if let Some(body) = self.bodies.get_mut(handle) {
+                    body.wake_up(true);
+                    woken += 1;
+                }
+            }
+        }
+        woken
+    }
+
+    /// Wakes every sleeping dynamic body. Returns how many were woken. O(n).
+    pub(crate) fn wake_dynamic_bodies(&mut self) -> usize {
+        let mut woken = 0;
+        for s in 0..self.slots.len() {
+            let body = self.body_at_mut(s);
+            if body.is_dynamic() && body.is_sleeping() {
+                body.wake_up(true);
+                woken += 1;
+            }
+        }
+        woken
     }
 
     /// Number of dynamic bodies that are awake.

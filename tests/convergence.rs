@@ -7,16 +7,6 @@ use common::*;
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::{CanvasSceneInput, Layout, RapierLayoutConfig, TopologyUpdate};
 
-fn settle(host: &mut Host<u32>, limit: usize) -> usize {
-    for frame in 1..=limit {
-        host.frame(FRAME);
-        if host.layout.is_converged(&host.state) {
-            return frame;
-        }
-    }
-    panic!("not converged after {limit} frames");
-}
-
 #[test]
 fn not_converged_before_a_world_exists() {
     let host = Host::new(load_scene("karate"), RapierLayoutConfig::default());
@@ -26,7 +16,7 @@ fn not_converged_before_a_world_exists() {
 #[test]
 fn les_miserables_settles_and_then_emits_no_visible_motion() {
     let mut host = Host::new(load_scene("les_miserables"), RapierLayoutConfig::default());
-    let frames = settle(&mut host, 5000);
+    let frames = host.settle(5000);
     assert!(
         frames > 30,
         "converged after {frames} frames: too early to be real"
@@ -63,7 +53,7 @@ fn les_miserables_settles_and_then_emits_no_visible_motion() {
 #[test]
 fn a_drag_a_host_move_and_a_topology_change_wake_it() {
     let mut host = Host::new(load_scene("florentine"), RapierLayoutConfig::default());
-    settle(&mut host, 5000);
+    host.settle(5000);
     host.extras.dragging.insert(3);
     let p = host.pos(&3);
     host.set_pos(
@@ -76,7 +66,7 @@ fn a_drag_a_host_move_and_a_topology_change_wake_it() {
         "a drag did not wake the layout"
     );
     host.extras.dragging.clear();
-    settle(&mut host, 5000);
+    host.settle(5000);
 
     host.set_pos(&5, Point2D::new(900.0, 900.0));
     host.frame(FRAME);
@@ -84,7 +74,7 @@ fn a_drag_a_host_move_and_a_topology_change_wake_it() {
         !host.layout.is_converged(&host.state),
         "a host move did not wake the layout"
     );
-    settle(&mut host, 5000);
+    host.settle(5000);
 
     host.scene.nodes.push(node(100, 0.0, 0.0));
     host.scene.edges.push(edge(100, 0));

@@ -11,20 +11,6 @@ use graph_canvas_layout::{quality, CanvasSceneInput, Layout, RapierLayoutConfig}
 /// d3-force stops after 300 ticks; the target is at most twice that.
 const SETTLE_BUDGET: usize = 600;
 
-/// Runs `host` until `is_converged`; returns the number of frames it took.
-fn settle(host: &mut Host<u32>, budget: usize) -> usize {
-    for frame in 1..=budget {
-        host.frame(FRAME);
-        if host.layout.is_converged(&host.state) {
-            return frame;
-        }
-    }
-    panic!(
-        "not at rest after {budget} frames (heat {:?})",
-        host.layout.heat()
-    );
-}
-
 #[test]
 fn every_shipped_graph_settles_within_twice_d3s_ticks_without_overlaps() {
     for name in [
@@ -37,7 +23,7 @@ fn every_shipped_graph_settles_within_twice_d3s_ticks_without_overlaps() {
         "n1000_e2500",
     ] {
         let mut host = Host::new(load_scene(name), RapierLayoutConfig::force_directed());
-        let frames = settle(&mut host, SETTLE_BUDGET);
+        let frames = host.settle(SETTLE_BUDGET);
         let overlaps = quality::overlapping_pairs(&host.scene, 16.0, 0.5);
         assert_eq!(
             overlaps, 0,
@@ -96,7 +82,7 @@ fn a_drag_reheats_the_layout_and_it_settles_again() {
     let config = RapierLayoutConfig::force_directed();
     let cooling = config.cooling.unwrap();
     let mut host = Host::new(load_scene("les_miserables"), config);
-    settle(&mut host, SETTLE_BUDGET);
+    host.settle(SETTLE_BUDGET);
     let grabbed = 11; // Valjean, the hub
     let neighbour = 48;
     let neighbour_before = host.pos(&neighbour);
@@ -121,7 +107,7 @@ fn a_drag_reheats_the_layout_and_it_settles_again() {
         moved > 20.0,
         "dragging the hub 300 units moved its neighbour only {moved}"
     );
-    let frames = settle(&mut host, SETTLE_BUDGET);
+    let frames = host.settle(SETTLE_BUDGET);
     assert!(
         host.pos(&grabbed).x > start.x + 150.0,
         "the hub went back to {:?} from {start:?}",
@@ -136,7 +122,7 @@ fn a_drag_reheats_the_layout_and_it_settles_again() {
 #[test]
 fn an_edit_reheats_without_a_rebuild() {
     let mut host = Host::new(load_scene("karate"), RapierLayoutConfig::force_directed());
-    settle(&mut host, SETTLE_BUDGET);
+    host.settle(SETTLE_BUDGET);
     let anchor = host.pos(&0);
     host.scene
         .nodes
@@ -147,7 +133,7 @@ fn an_edit_reheats_without_a_rebuild() {
     assert_eq!(host.layout.patch_count(), 1);
     let cooling = host.layout.config.cooling.unwrap();
     assert_eq!(host.layout.heat(), Some(cooling.cooled(1.0, FRAME)));
-    settle(&mut host, SETTLE_BUDGET);
+    host.settle(SETTLE_BUDGET);
     let gap = dist(host.pos(&100), host.pos(&0));
     assert!(
         (32.0..300.0).contains(&gap),
@@ -162,7 +148,7 @@ fn switching_cooling_off_gives_the_springs_their_full_stiffness() {
         load_scene("florentine"),
         RapierLayoutConfig::force_directed(),
     );
-    settle(&mut host, SETTLE_BUDGET);
+    host.settle(SETTLE_BUDGET);
     // Springs follow heat^spring_exponent in 5 % steps, and the heat may have cooled one
     // more frame (at most 1.4 % over an 8 s schedule) since the last re-tune.
     let scale = host.layout.world().unwrap().spring_scale();
@@ -192,7 +178,7 @@ fn a_graph_stopped_at_the_end_of_its_schedule_wakes_for_a_drag() {
         load_scene("n1000_e2500"),
         RapierLayoutConfig::force_directed(),
     );
-    settle(&mut host, SETTLE_BUDGET);
+    host.settle(SETTLE_BUDGET);
     let fastest = (0..1000_u32)
         .filter_map(|id| host.layout.world().unwrap().linear_velocity(&id))
         .map(|v| v.length())
@@ -221,7 +207,7 @@ fn a_graph_stopped_at_the_end_of_its_schedule_wakes_for_a_drag() {
         followers > 0,
         "dragging node 0 by 200 units moved no other node by more than 1 unit"
     );
-    let frames = settle(&mut host, SETTLE_BUDGET);
+    let frames = host.settle(SETTLE_BUDGET);
     assert!(frames > 60, "back at rest after only {frames} frames");
 }
 
@@ -231,7 +217,7 @@ fn the_fast_variant_settles_a_thousand_nodes_with_few_overlaps() {
         load_scene("n1000_e2500"),
         RapierLayoutConfig::force_directed_fast(),
     );
-    let frames = settle(&mut host, SETTLE_BUDGET);
+    let frames = host.settle(SETTLE_BUDGET);
     let mean = quality::mean_edge_length(&host.scene).unwrap();
     assert!(
         (100.0..350.0).contains(&mean),
@@ -271,7 +257,7 @@ fn hot_contacts_let_nodes_through_early_and_part_them_at_rest() {
         soft_gap < 0.5 * (firm_gap - 12.0) + 12.0,
         "after one hot frame: 5 Hz contacts opened the gap to {soft_gap}, firm ones to {firm_gap}"
     );
-    let frames = settle(&mut soft, SETTLE_BUDGET);
+    let frames = soft.settle(SETTLE_BUDGET);
     let gap = dist(soft.pos(&0), soft.pos(&1));
     assert!(
         gap >= 31.5,
@@ -297,7 +283,7 @@ fn the_first_unfolding_leaves_contacts_out_and_later_reheats_keep_them() {
         heat > gate && (gap - 12.0).abs() < 1e-3,
         "at heat {heat} (contacts from {gate}) the overlapping pair moved to {gap} apart"
     );
-    let frames = settle(&mut host, SETTLE_BUDGET);
+    let frames = host.settle(SETTLE_BUDGET);
     let gap = dist(host.pos(&0), host.pos(&1));
     assert!(
         gap >= 31.5,

@@ -7,7 +7,7 @@ mod common;
 
 use common::*;
 use graph_canvas_layout::euclid::default::Point2D;
-use graph_canvas_layout::{CanvasSceneInput, Layout, RapierLayoutConfig};
+use graph_canvas_layout::{CanvasSceneInput, RapierLayoutConfig};
 
 /// Two unconnected nodes 500 apart, at rest; then node 2 is moved by the host over 20
 /// frames to 10 units right of node 0, dragged or pinned. Returns how far node 0 moved.
@@ -17,15 +17,7 @@ fn push_after_rest(config: RapierLayoutConfig, pinned: bool) -> f32 {
         ..Default::default()
     };
     let mut host = Host::new(scene, config);
-    let mut frames = 0;
-    while !host.layout.is_converged(&host.state) && frames < 900 {
-        host.frame(FRAME);
-        frames += 1;
-    }
-    assert!(
-        host.layout.is_converged(&host.state),
-        "not at rest after {frames} frames"
-    );
+    host.settle(900);
     let before = host.pos(&0);
     if pinned {
         host.extras.pinned.insert(2);

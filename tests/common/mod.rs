@@ -43,6 +43,21 @@ impl<N: Clone + Eq + Hash + std::fmt::Debug> Host<N> {
         deltas
     }
 
+    /// Runs frames until `is_converged`; returns how many it took. Panics, with the
+    /// heat, when `budget` frames are not enough.
+    pub fn settle(&mut self, budget: usize) -> usize {
+        for frame in 1..=budget {
+            self.frame(FRAME);
+            if self.layout.is_converged(&self.state) {
+                return frame;
+            }
+        }
+        panic!(
+            "not at rest after {budget} frames (heat {:?})",
+            self.layout.heat()
+        );
+    }
+
     pub fn frames(&mut self, n: usize) {
         for _ in 0..n {
             self.frame(FRAME);

@@ -3,7 +3,8 @@
 //!
 //! Moving-state benchmarks time frames 30..270 of a layout started from the scene file
 //! (the graph is still in motion then) and restart from a fresh, warmed layout every 240
-//! timed frames, so every sample measures the same kind of state. `asleep` benchmarks
+//! timed frames, so every sample measures the same kind of state: the mean frame of whole
+//! windows, however few calls criterion asks for. `asleep` benchmarks
 //! time a layout that `is_converged`.
 
 mod common;
@@ -17,24 +18,25 @@ use graph_canvas_layout::{Accuracy, Layout, RapierLayoutConfig};
 const WARM: usize = 30;
 const CHUNK: u64 = 240;
 
-/// Times `iters` calls of `step` on fresh states made by `make` and warmed `WARM` frames.
+/// Times `step` over whole windows of frames `WARM..WARM + CHUNK` of fresh states made by
+/// `make`, and scales the total to `iters` calls: every sample is the mean frame of
+/// complete windows, so a slow benchmark, sampled a few calls at a time, is not timed on
+/// its first frames only.
 fn chunked<S>(iters: u64, mut make: impl FnMut() -> S, mut step: impl FnMut(&mut S)) -> Duration {
+    let windows = iters.div_ceil(CHUNK).max(1);
     let mut total = Duration::ZERO;
-    let mut left = iters;
-    while left > 0 {
+    for _ in 0..windows {
         let mut state = make();
         for _ in 0..WARM {
             step(&mut state);
         }
-        let n = left.min(CHUNK);
         let started = Instant::now();
-        for _ in 0..n {
+        for _ in 0..CHUNK {
             step(&mut state);
         }
         total += started.elapsed();
-        left -= n;
     }
-    total
+    total.mul_f64(iters as f64 / (windows * CHUNK) as f64)
 }
 
 /// The layout's step while the graph moves; asserts it does move.
@@ -214,8 +216,8 @@ fn presets(c: &mut Criterion) {
     }
 }
 
-/// `force_directed()` (repulsion, shared springs, firm contacts, cooling) while the
-/// graph unfolds: d3-force's tick on the same scenes is the yardstick (README).
+/// `force_directed()` (repulsion, shared and biased springs, contacts, cooling) while
+/// the graph unfolds: d3-force's tick on the same scenes is the yardstick (README).
 fn force_directed(c: &mut Criterion) {
     for name in ["n200_e500", "n1000_e2500"] {
         persistent(
@@ -247,12 +249,18 @@ fn scaling(c: &mut Criterion) {
 }
 
 fn large(c: &mut Criterion) {
-    // The fastest force-directed setting on the largest scene, unfolding from the file.
+    // Both force-directed settings on the largest scene, unfolding from the file.
     persistent(
         c,
         "n10000_e25000",
         RapierLayoutConfig::force_directed_fast(),
         "force_directed_fast",
+    );
+    persistent(
+        c,
+        "n10000_e25000",
+        RapierLayoutConfig::force_directed(),
+        "force_directed",
     );
     for name in ["n5000_e12500", "n10000_e25000"] {
         let start = relaxed(name, 300);

@@ -3,16 +3,21 @@
 //! variation), overlapping node pairs, edge crossings, frames to settle, and the step
 //! time. `scripts/d3-quality.mjs` measures d3-force on the same scenes.
 //!
-//! Run with `cargo run --release --example quality [--fast] [scene ...]` (`--fast`:
-//! `RapierLayoutConfig::force_directed_fast()`); any shipped scene may be
+//! Run with `cargo run --release --example quality [--fast] [--starts N] [scene ...]`
+//! (`--fast`: `RapierLayoutConfig::force_directed_fast()`); any shipped scene may be
 //! named (`n1000_e2500`, `n10000_e25000`). Overlaps and crossings are counted pairwise,
 //! so above 3,000 nodes or edges they are left out ("-"), as in the d3 script.
+//!
+//! `--starts N` lays each scene out N times, from the file's positions and then from
+//! N − 1 copies jittered by up to half a unit (a fixed sequence, so runs repeat), and
+//! prints the spread of the results instead of one run: a single run of a chaotic
+//! layout can be lucky.
 
 use std::time::Instant;
 
 use graph_canvas_layout::{
-    quality, CanvasViewport, Layout, LayoutExtras, RapierLayout, RapierLayoutConfig,
-    RapierLayoutState, SceneFile,
+    quality, CanvasSceneInput, CanvasViewport, Layout, LayoutExtras, RapierLayout,
+    RapierLayoutConfig, RapierLayoutState, SceneFile,
 };
 
 const SCENES: [&str; 6] = [
@@ -23,6 +28,10 @@ const SCENES: [&str; 6] = [
     "tree_1023",
     "grid_30x30",
 ];
+/// Frames after which a layout counts as not settling.
+const MAX_FRAMES: usize = 3000;
+/// Above this many nodes or edges, pairwise counts are left out.
+const PAIRWISE_LIMIT: usize = 3000;
 
 /// `GCL_TUNE="strength k c damping theta"` overrides the force-directed defaults, to explore.
 fn tune(config: &mut RapierLayoutConfig) {
@@ -45,71 +54,145 @@ fn tune(config: &mut RapierLayoutConfig) {
     }
 }
 
-fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let fast = args.iter().any(|a| a == "--fast");
-    let only: Vec<&String> = args.iter().filter(|a| *a != "--fast").collect();
-    println!("| scene | nodes | edges | frames to settle | edge-length CV | mean edge | overlaps | crossings | µs per step |");
-    println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
-    let names: Vec<&str> = if only.is_empty() {
-        SCENES.to_vec()
+/// What one layout run measured.
+struct Run {
+    frames: usize,
+    cv: f32,
+    mean_edge: f32,
+    overlaps: Option<usize>,
+    crossings: Option<usize>,
+    micros_per_step: f64,
+}
+
+/// Lays `scene` out until `is_converged` (or [`MAX_FRAMES`]) and measures the result.
+fn run(mut scene: CanvasSceneInput<u32>, fast: bool) -> Run {
+    let mut config = if fast {
+        RapierLayoutConfig::force_directed_fast()
     } else {
-        only.iter().map(|s| s.as_str()).collect()
+        RapierLayoutConfig::force_directed()
     };
-    for name in names {
-        let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
-        let text = std::fs::read_to_string(&path).expect("scene file");
-        let mut scene = serde_json::from_str::<SceneFile>(&text)
-            .expect("scene json")
-            .into_scene();
-        let mut config = if fast {
-            RapierLayoutConfig::force_directed_fast()
-        } else {
-            RapierLayoutConfig::force_directed()
-        };
-        tune(&mut config);
-        let default_radius = config.default_radius;
-        let mut layout = RapierLayout::new(config);
-        let mut state = RapierLayoutState::default();
-        let extras = LayoutExtras::default();
-        let mut frames = 0;
-        let started = Instant::now();
-        while !layout.is_converged(&state) && frames < 3000 {
-            let deltas = layout.step(
-                &scene,
-                &mut state,
-                1.0 / 60.0,
-                &CanvasViewport::default(),
-                &extras,
-            );
-            scene.apply_deltas(&deltas);
-            frames += 1;
-        }
-        let per_step = started.elapsed().as_secs_f64() * 1e6 / f64::from(frames.max(1));
-        println!(
-            "| {name} | {} | {} | {}{} | {:.2} | {:.0} | {} | {} | {:.0} |",
-            scene.nodes.len(),
-            scene.edges.len(),
-            frames,
-            if frames >= 3000 { " (not settled)" } else { "" },
-            quality::edge_length_cv(&scene).unwrap_or(0.0),
-            quality::mean_edge_length(&scene).unwrap_or(0.0),
-            pairwise(scene.nodes.len(), || quality::overlapping_pairs(
-                &scene,
-                default_radius,
-                0.5
-            )),
-            pairwise(scene.edges.len(), || quality::edge_crossings(&scene)),
-            per_step,
+    tune(&mut config);
+    let default_radius = config.default_radius;
+    let mut layout = RapierLayout::new(config);
+    let mut state = RapierLayoutState::default();
+    let extras = LayoutExtras::default();
+    let mut frames = 0;
+    let started = Instant::now();
+    while !layout.is_converged(&state) && frames < MAX_FRAMES {
+        let deltas = layout.step(
+            &scene,
+            &mut state,
+            1.0 / 60.0,
+            &CanvasViewport::default(),
+            &extras,
         );
+        scene.apply_deltas(&deltas);
+        frames += 1;
+    }
+    let micros_per_step = started.elapsed().as_secs_f64() * 1e6 / frames.max(1) as f64;
+    Run {
+        frames,
+        cv: quality::edge_length_cv(&scene).unwrap_or(0.0),
+        mean_edge: quality::mean_edge_length(&scene).unwrap_or(0.0),
+        overlaps: (scene.nodes.len() <= PAIRWISE_LIMIT)
+            .then(|| quality::overlapping_pairs(&scene, default_radius, 0.5)),
+        crossings: (scene.edges.len() <= PAIRWISE_LIMIT).then(|| quality::edge_crossings(&scene)),
+        micros_per_step,
     }
 }
 
-/// A pairwise count, or "-" above 3,000 elements.
-fn pairwise(elements: usize, count: impl FnOnce() -> usize) -> String {
-    if elements <= 3000 {
-        count().to_string()
+/// The scene's positions moved by up to half a unit each way; start 0 is the file's.
+fn jittered(mut scene: CanvasSceneInput<u32>, start: u64) -> CanvasSceneInput<u32> {
+    if start == 0 {
+        return scene;
+    }
+    let mut seed = start;
+    let mut next = move || {
+        seed = seed
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (seed >> 40) as f32 / (1_u64 << 24) as f32 - 0.5
+    };
+    for node in &mut scene.nodes {
+        node.position.x += next();
+        node.position.y += next();
+    }
+    scene
+}
+
+fn count(value: Option<usize>) -> String {
+    value.map_or_else(|| "-".to_string(), |v| v.to_string())
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let fast = args.iter().any(|a| a == "--fast");
+    let mut starts = 1_u64;
+    let mut names = Vec::new();
+    let mut rest = args.iter();
+    while let Some(arg) = rest.next() {
+        match arg.as_str() {
+            "--fast" => {}
+            "--starts" => {
+                starts = rest
+                    .next()
+                    .and_then(|n| n.parse().ok())
+                    .filter(|&n| n > 0)
+                    .expect("--starts takes a positive count");
+            }
+            name => names.push(name.to_string()),
+        }
+    }
+    if names.is_empty() {
+        names = SCENES.iter().map(|s| s.to_string()).collect();
+    }
+    if starts == 1 {
+        println!("| scene | nodes | edges | frames to settle | edge-length CV | mean edge | overlaps | crossings | µs per step |");
+        println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
     } else {
-        "-".to_string()
+        println!("| scene | starts | frames to settle (min–max) | edge-length CV mean | CV min–max | overlaps (all starts) |");
+        println!("| --- | ---: | ---: | ---: | ---: | ---: |");
+    }
+    for name in names {
+        let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
+        let text = std::fs::read_to_string(&path).expect("scene file");
+        let scene = serde_json::from_str::<SceneFile>(&text)
+            .expect("scene json")
+            .into_scene();
+        let (nodes, edges) = (scene.nodes.len(), scene.edges.len());
+        let runs: Vec<Run> = (0..starts)
+            .map(|k| run(jittered(scene.clone(), k), fast))
+            .collect();
+        let settled = |frames: usize| {
+            if frames >= MAX_FRAMES {
+                " (not settled)"
+            } else {
+                ""
+            }
+        };
+        if let [r] = runs.as_slice() {
+            println!(
+                "| {name} | {nodes} | {edges} | {}{} | {:.2} | {:.0} | {} | {} | {:.0} |",
+                r.frames,
+                settled(r.frames),
+                r.cv,
+                r.mean_edge,
+                count(r.overlaps),
+                count(r.crossings),
+                r.micros_per_step,
+            );
+            continue;
+        }
+        let frames_min = runs.iter().map(|r| r.frames).min().unwrap_or(0);
+        let frames_max = runs.iter().map(|r| r.frames).max().unwrap_or(0);
+        let cv_mean = runs.iter().map(|r| f64::from(r.cv)).sum::<f64>() / runs.len() as f64;
+        let cv_min = runs.iter().map(|r| r.cv).fold(f32::INFINITY, f32::min);
+        let cv_max = runs.iter().map(|r| r.cv).fold(0.0_f32, f32::max);
+        let overlaps: Option<usize> = runs.iter().map(|r| r.overlaps).sum();
+        println!(
+            "| {name} | {starts} | {frames_min}–{frames_max}{} | {cv_mean:.3} | {cv_min:.3}–{cv_max:.3} | {} |",
+            settled(frames_max),
+            count(overlaps),
+        );
     }
 }

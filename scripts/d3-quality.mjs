@@ -2,12 +2,38 @@
 // node radius, centre. Prints edge-length CV, overlapping pairs, crossings, ticks to
 // settle (d3 stops when alpha < alphaMin: 300 ticks) and the mean tick time.
 //
-//   cd scripts && npm install && node d3-quality.mjs [scene ...]
+//   cd scripts && npm install && node d3-quality.mjs [--starts N] [scene ...]
+//
+// `--starts N` lays each scene out N times, from the file's positions and then from N - 1
+// copies jittered by up to half a unit, with the same sequence as the `quality` example
+// (`cargo run --release --example quality -- --starts N`), and prints the spread.
 import { readFileSync } from "node:fs";
 import { forceSimulation, forceLink, forceManyBody, forceCollide, forceCenter } from "d3-force";
 
-const scenes = process.argv.length > 2 ? process.argv.slice(2)
+const args = process.argv.slice(2);
+let starts = 1;
+const startsAt = args.indexOf("--starts");
+if (startsAt >= 0) {
+  starts = Number(args[startsAt + 1]);
+  args.splice(startsAt, 2);
+}
+const scenes = args.length > 0 ? args
   : ["karate", "les_miserables", "florentine", "n200_e500", "tree_1023", "grid_30x30", "n1000_e2500", "n10000_e25000"];
+
+// The quality example's jitter: a 64-bit LCG, the top 24 bits of each state as an offset.
+function jitter(nodes, start) {
+  if (start === 0) return;
+  const mask = (1n << 64n) - 1n;
+  let seed = BigInt(start);
+  const next = () => {
+    seed = (seed * 6364136223846793005n + 1442695040888963407n) & mask;
+    return Number(seed >> 40n) / 2 ** 24 - 0.5;
+  };
+  for (const n of nodes) {
+    n.x += next();
+    n.y += next();
+  }
+}
 
 function measure(nodes, links) {
   const lengths = links.map((l) => Math.hypot(l.source.x - l.target.x, l.source.y - l.target.y));
@@ -32,11 +58,9 @@ function measure(nodes, links) {
   return { cv: sd / mean, mean, overlaps, crossings };
 }
 
-console.log("| scene | ticks | edge-length CV | mean edge | overlaps | crossings | ms per tick |");
-console.log("| --- | ---: | ---: | ---: | ---: | ---: | ---: |");
-for (const name of scenes) {
-  const scene = JSON.parse(readFileSync(new URL(`../scenes/${name}.json`, import.meta.url)));
+function layout(scene, start) {
   const nodes = scene.nodes.map((n) => ({ id: n.id, x: n.x, y: n.y, radius: n.radius || 16 }));
+  jitter(nodes, start);
   const links = scene.edges.filter(([a, b]) => a !== b).map(([source, target]) => ({ source, target }));
   const sim = forceSimulation(nodes)
     .force("link", forceLink(links).id((d) => d.id).distance(100))
@@ -48,7 +72,27 @@ for (const name of scenes) {
   const started = process.hrtime.bigint();
   while (sim.alpha() >= sim.alphaMin()) { sim.tick(); ticks++; }
   const ms = Number(process.hrtime.bigint() - started) / 1e6 / ticks;
-  const m = measure(nodes, links);
-  const fmt = (x) => (x === undefined ? "-" : x);
-  console.log(`| ${name} | ${ticks} | ${m.cv.toFixed(2)} | ${m.mean.toFixed(0)} | ${nodes.length <= 3000 ? m.overlaps : "-"} | ${links.length <= 3000 ? m.crossings : "-"} | ${ms.toFixed(2)} |`);
+  return { ticks, ms, nodes, links, ...measure(nodes, links) };
+}
+
+if (starts === 1) {
+  console.log("| scene | ticks | edge-length CV | mean edge | overlaps | crossings | ms per tick |");
+  console.log("| --- | ---: | ---: | ---: | ---: | ---: | ---: |");
+} else {
+  console.log("| scene | starts | edge-length CV mean | CV min-max | overlaps (all starts) |");
+  console.log("| --- | ---: | ---: | ---: | ---: |");
+}
+for (const name of scenes) {
+  const scene = JSON.parse(readFileSync(new URL(`../scenes/${name}.json`, import.meta.url)));
+  const runs = Array.from({ length: starts }, (_, k) => layout(scene, k));
+  const pairwise = (count, x) => (count <= 3000 ? x : "-");
+  if (starts === 1) {
+    const m = runs[0];
+    console.log(`| ${name} | ${m.ticks} | ${m.cv.toFixed(2)} | ${m.mean.toFixed(0)} | ${pairwise(m.nodes.length, m.overlaps)} | ${pairwise(m.links.length, m.crossings)} | ${m.ms.toFixed(2)} |`);
+  } else {
+    const cvs = runs.map((r) => r.cv);
+    const mean = cvs.reduce((a, b) => a + b, 0) / cvs.length;
+    const overlaps = runs.reduce((a, r) => a + r.overlaps, 0);
+    console.log(`| ${name} | ${starts} | ${mean.toFixed(3)} | ${Math.min(...cvs).toFixed(3)}-${Math.max(...cvs).toFixed(3)} | ${pairwise(scene.nodes.length, overlaps)} |`);
+  }
 }

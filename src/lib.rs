@@ -88,6 +88,15 @@
 //!
 //! **Laying a graph out from scratch?** Use [`RapierLayoutConfig::force_directed`]:
 //! springs and contacts alone pack a graph into a blob; many-body repulsion spreads it.
+//! Its [`Cooling`] schedule brings the layout to rest within about 8.5 s of simulated
+//! time, then stops stepping the world until the next drag, release, host move or
+//! edit.
+//!
+//! **Nodes pass through each other right after loading?** With
+//! [`RapierLayoutConfig::force_directed`], contacts join the first unfolding once it
+//! has cooled to [`Cooling::first_contact_heat`] (about 1.4 s): a fresh scatter
+//! collapsing into thousands of contact pairs would cost most of the step. Set it to
+//! `None` for contacts from the first frame.
 #![deny(missing_docs)]
 
 mod adapter;

@@ -142,6 +142,8 @@ pub struct RapierLayout<N> {
     /// (or the layout rests), when [`Cooling::first_contact_heat`](crate::Cooling) and
     /// [`Cooling::hot_contact_frequency`](crate::Cooling) apply.
     unfolding: bool,
+    /// The gravity of the last call: a change is a disturbance.
+    gravity: Vector2D<f32>,
 }
 
 impl<N> std::fmt::Debug for RapierLayout<N> {
@@ -198,6 +200,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             cold_time: 0.0,
             halted: false,
             unfolding: false,
+            gravity: Vector2D::zero(),
         }
     }
 
@@ -380,16 +383,34 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         plan.substep_dt /= substeps as f32;
         // New joints are tuned for the longest substep this configuration takes.
         self.fixed_dt = sanitized_timestep(state.dt) / substeps as f32;
-        self.apply_config_changes();
+        let reconfigured = self.apply_config_changes();
+        let unfolding_before = self.unfolding;
         let mut disturbed = self.sync_topology(scene, extras);
         disturbed |= self.sync_in(scene, extras, plan.frame_dt);
         disturbed |= !self.drives.is_empty();
+        let gravity = Vector2D::new(
+            finite_or(state.gravity_x, 0.0),
+            finite_or(state.gravity_y, 0.0),
+        );
+        if reconfigured || gravity != self.gravity {
+            // Nothing in the scene changed, yet bodies at rest may now be pushed.
+            disturbed = true;
+            if let Some(world) = self.world.as_mut() {
+                world.wake_dynamic_bodies();
+            }
+        }
+        self.gravity = gravity;
+        if disturbed && unfolding_before {
+            // An interaction during the first unfolding: contacts in, and firm.
+            self.end_unfolding();
+        }
         if disturbed || self.config.cooling.is_none() {
             self.halted = false;
         }
         if self.halted {
             // Cooled and stopped: nothing moves until the next disturbance.
             state.simulated_time += f64::from(plan.simulated());
+            self.recovered.clear();
             self.converged = true;
             return DeltaMap::default();
         }
@@ -401,10 +422,6 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 self.cold_time = 0.0;
             }
         }
-        let gravity = Vector2D::new(
-            finite_or(state.gravity_x, 0.0),
-            finite_or(state.gravity_y, 0.0),
-        );
         let awake_before = self
             .world
             .as_ref()
@@ -446,19 +463,19 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.converged = false;
         self.calm_time = 0.0;
         self.halted = false;
+        self.link_bias = LinkBias::default();
     }
 
     /// Config changes that the world's structure depends on drop it (rebuilt this call);
-    /// a joint change replaces the joints in place.
-    fn apply_config_changes(&mut self) {
+    /// a joint change replaces the joints in place. Returns whether anything changed:
+    /// a new configuration is a disturbance, since it may move what was at rest.
+    fn apply_config_changes(&mut self) -> bool {
         let Some(applied) = &self.applied else {
-            return;
+            return false;
         };
         if *applied == self.config {
-            return;
+            return false;
         }
-        // A new configuration may move what was at rest.
-        self.halted = false;
         let structural = applied.material != self.config.material
             || applied.collisions != self.config.collisions
             || applied.contact_events != self.config.contact_events
@@ -491,6 +508,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.cached_edges.clear();
         }
         self.applied = Some(self.config.clone());
+        true
     }
 
     /// The node's radius, or the configured default for 0 (an unusable default counts
@@ -633,6 +651,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     fn build_world(&mut self, scene: &CanvasSceneInput<N>, topology: &Topology) {
         let mut world = RapierSceneWorld::with_options(self.world_options());
         world.set_timestep(self.fixed_dt);
+        // A new world counts its versions from 0 again.
+        self.link_bias = LinkBias::default();
         // Contacts stay out of the first unfolding until the heat lets them in.
         world.set_contacts_enabled(!(self.unfolding || self.rebuilds == 0));
         let mut spread = CoincidenceSpreader::default();

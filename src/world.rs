@@ -1065,6 +1065,13 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         halted
     }
 
+    /// The former name of [`halt_dynamic_bodies`](Self::halt_dynamic_bodies), which it
+    /// now calls: rapier's own sleep left the bodies' island simulated.
+    #[deprecated(note = "use `halt_dynamic_bodies`: rapier's sleep left the island simulated")]
+    pub fn sleep_dynamic_bodies(&mut self) -> usize {
+        self.halt_dynamic_bodies()
+    }
+
     /// Turns contacts between nodes off or on, keeping the colliders: off, the broad and
     /// narrow phases skip them (and report no contact events), so nodes pass through
     /// each other. Turning them on wakes every body, so overlaps made meanwhile are

@@ -306,3 +306,54 @@ fn the_first_unfolding_leaves_contacts_out_and_later_reheats_keep_them() {
         "node 2 dragged next to node 0 pushed it only {pushed} (contacts off after a reheat?)"
     );
 }
+
+#[test]
+fn a_drag_during_the_first_unfolding_lets_contacts_in() {
+    let scene = CanvasSceneInput {
+        nodes: vec![node(0, 0.0, 0.0), node(2, 500.0, 0.0)],
+        ..Default::default()
+    };
+    let mut config = RapierLayoutConfig::force_directed();
+    config.repulsion = None;
+    let mut host = Host::new(scene, config);
+    host.frames(5);
+    assert!(
+        !host.layout.world().unwrap().contacts_enabled(),
+        "contacts are out of the first unfolding at heat {:?}",
+        host.layout.heat()
+    );
+    let before = host.pos(&0);
+    host.extras.dragging.insert(2);
+    host.set_pos(&2, Point2D::new(before.x + 10.0, before.y));
+    host.frames(10);
+    let pushed = dist(host.pos(&0), before);
+    assert!(
+        pushed > 5.0,
+        "node 2 dragged next to node 0 in the first second pushed it only {pushed}"
+    );
+}
+
+#[test]
+fn a_configuration_change_moves_a_stopped_layout() {
+    let mut host = Host::new(
+        load_scene("florentine"),
+        RapierLayoutConfig::force_directed(),
+    );
+    host.settle(SETTLE_BUDGET);
+    assert!(host.frame(FRAME).is_empty(), "at rest");
+    let before = positions(&host.scene);
+    if let Some(repulsion) = host.layout.config.repulsion.as_mut() {
+        repulsion.strength *= 4.0;
+    }
+    host.frames(30);
+    let moved = host
+        .scene
+        .nodes
+        .iter()
+        .map(|n| dist(n.position, before[&n.id]))
+        .fold(0.0_f32, f32::max);
+    assert!(
+        moved > 10.0,
+        "four times the repulsion moved no node more than {moved} in half a second"
+    );
+}

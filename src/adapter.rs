@@ -386,8 +386,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let reconfigured = self.apply_config_changes();
         let unfolding_before = self.unfolding;
         let mut disturbed = self.sync_topology(scene, extras);
+        // Every drive comes with a disturbance from `sync_in`.
         disturbed |= self.sync_in(scene, extras, plan.frame_dt);
-        disturbed |= !self.drives.is_empty();
         let gravity = Vector2D::new(
             finite_or(state.gravity_x, 0.0),
             finite_or(state.gravity_y, 0.0),

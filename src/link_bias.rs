@@ -82,21 +82,24 @@ impl LinkBias {
     fn rebuild<N: Clone + Eq + std::hash::Hash>(&mut self, world: &RapierSceneWorld<N>) {
         self.degrees.clear();
         self.degrees.resize(world.slots.len(), 0);
-        for (a, b, ..) in world.springs() {
-            self.degrees[a] += 1;
-            self.degrees[b] += 1;
-        }
         self.springs.clear();
         for (a, b, rest_length, stiffness, cap) in world.springs() {
-            let (da, db) = (self.degrees[a] as f32, self.degrees[b] as f32);
+            self.degrees[a] += 1;
+            self.degrees[b] += 1;
             self.springs.push(BiasedSpring {
                 a: a as u32,
                 b: b as u32,
-                share: (db - da) / (da + db),
+                share: 0.0,
                 rest_length,
                 stiffness,
                 cap,
             });
+        }
+        // Shares once every degree is counted.
+        for spring in &mut self.springs {
+            let da = self.degrees[spring.a as usize] as f32;
+            let db = self.degrees[spring.b as usize] as f32;
+            spring.share = (db - da) / (da + db);
         }
         self.version = Some(world.version());
     }

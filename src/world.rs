@@ -1103,13 +1103,11 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         for slot in &self.slots {
             if let Some(collider) = slot.collider.and_then(|c| self.colliders.get_mut(c)) {
                 collider.set_enabled(enabled);
-                if enabled {
-                    // A body asleep in an overlap would not notice its new contacts.
-                    if let Some(body) = self.bodies.get_mut(slot.body) {
-                        body.wake_up(true);
-                    }
-                }
             }
+        }
+        if enabled {
+            // A body asleep in an overlap would not notice its new contacts.
+            self.wake_dynamic_bodies();
         }
     }
 

@@ -3,8 +3,11 @@
 //! variation), overlapping node pairs, edge crossings, frames to settle, and the step
 //! time. `scripts/d3-quality.mjs` measures d3-force on the same scenes.
 //!
-//! Run with `cargo run --release --example quality [--fast] [--starts N] [scene ...]`
-//! (`--fast`: `RapierLayoutConfig::force_directed_fast()`); any shipped scene may be
+//! Run with `cargo run --release --example quality [--fast] [--starts N] [--leave-out
+//! SETTING] [scene ...]` (`--fast`: `RapierLayoutConfig::force_directed_fast()`;
+//! `--leave-out`: one of `spring_exponent`, `spring_degree_exponent`, `link_bias`,
+//! `first_contact_heat`, `hot_contact_frequency`, `accuracy` switched back to d3's plain
+//! setting or rapier's two iterations, as in the README's table); any shipped scene may be
 //! named (`n1000_e2500`, `n10000_e25000`). Overlaps and crossings are counted pairwise,
 //! so above 3,000 nodes or edges they are left out ("-"), as in the d3 script.
 //!
@@ -16,7 +19,7 @@
 use std::time::Instant;
 
 use graph_canvas_layout::{
-    quality, CanvasSceneInput, CanvasViewport, Layout, LayoutExtras, RapierLayout,
+    quality, Accuracy, CanvasSceneInput, CanvasViewport, Layout, LayoutExtras, RapierLayout,
     RapierLayoutConfig, RapierLayoutState, SceneFile,
 };
 
@@ -64,14 +67,30 @@ struct Run {
     micros_per_step: f64,
 }
 
+/// `--leave-out SETTING`: one departure of `force_directed()` from d3-force switched
+/// back, to measure what it does.
+fn leave_out(config: &mut RapierLayoutConfig, setting: &str) {
+    let cooling = config
+        .cooling
+        .as_mut()
+        .expect("force-directed presets cool");
+    match setting {
+        "spring_exponent" => cooling.spring_exponent = 1.0,
+        "spring_degree_exponent" => config.spring_degree_exponent = 1.0,
+        "link_bias" => config.link_bias = 0.0,
+        "first_contact_heat" => cooling.first_contact_heat = None,
+        "hot_contact_frequency" => cooling.hot_contact_frequency = None,
+        "accuracy" => config.accuracy = Accuracy::Balanced,
+        other => panic!(
+            "--leave-out takes spring_exponent, spring_degree_exponent, link_bias, \
+             first_contact_heat, hot_contact_frequency or accuracy, not {other:?}"
+        ),
+    }
+}
+
 /// Lays `scene` out until `is_converged` (or [`MAX_FRAMES`]) and measures the result.
-fn run(mut scene: CanvasSceneInput<u32>, fast: bool) -> Run {
-    let mut config = if fast {
-        RapierLayoutConfig::force_directed_fast()
-    } else {
-        RapierLayoutConfig::force_directed()
-    };
-    tune(&mut config);
+fn run(mut scene: CanvasSceneInput<u32>, config: &RapierLayoutConfig) -> Run {
+    let config = config.clone();
     let default_radius = config.default_radius;
     let mut layout = RapierLayout::new(config);
     let mut state = RapierLayoutState::default();
@@ -126,7 +145,12 @@ fn count(value: Option<usize>) -> String {
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let fast = args.iter().any(|a| a == "--fast");
+    let mut config = if args.iter().any(|a| a == "--fast") {
+        RapierLayoutConfig::force_directed_fast()
+    } else {
+        RapierLayoutConfig::force_directed()
+    };
+    tune(&mut config);
     let mut starts = 1_u64;
     let mut names = Vec::new();
     let mut rest = args.iter();
@@ -139,6 +163,10 @@ fn main() {
                     .and_then(|n| n.parse().ok())
                     .filter(|&n| n > 0)
                     .expect("--starts takes a positive count");
+            }
+            "--leave-out" => {
+                let setting = rest.next().expect("--leave-out takes a setting");
+                leave_out(&mut config, setting);
             }
             name => names.push(name.to_string()),
         }
@@ -161,7 +189,7 @@ fn main() {
             .into_scene();
         let (nodes, edges) = (scene.nodes.len(), scene.edges.len());
         let runs: Vec<Run> = (0..starts)
-            .map(|k| run(jittered(scene.clone(), k), fast))
+            .map(|k| run(jittered(scene.clone(), k), &config))
             .collect();
         let settled = |frames: usize| {
             if frames >= MAX_FRAMES {

@@ -382,14 +382,16 @@ impl RapierLayoutConfig {
     ///   overlapping pairs on `n1000_e2500` and is slower on `n10000_e25000` (68 ms per
     ///   step: under-resolved contacts make more pairs). Three PGS passes resolve them
     ///   as well as [`Accuracy::Balanced`]'s two solver iterations, without the second
-    ///   constraint update and position integration: 37 against 44 ms per step on
-    ///   `n10000_e25000` and 1.22 against 1.30 ms on `n1000_e2500`, with no overlaps.
+    ///   constraint update and position integration: about 7 % less per step on
+    ///   `n1000_e2500` (1.22 against 1.30 ms) and `n10000_e25000`, with no overlaps,
+    ///   for a little more spread on karate and trees (README).
     ///
     /// Every shipped graph comes to rest (every body asleep, or halted at the end of the
     /// schedule) within 9 s of simulated
     /// time after the last disturbance. Contacts dominate the step of large random
-    /// graphs (45 ms per step at 10,000 nodes); for thousands of nodes
-    /// [`force_directed_fast`](Self::force_directed_fast) takes 14 ms. The damping
+    /// graphs (36.6 ms per step over frames 30–270 at 10,000 nodes, 41 ms averaged
+    /// until rest); for thousands of nodes
+    /// [`force_directed_fast`](Self::force_directed_fast) takes 11 ms. The damping
     /// is d3's: a throw stops within a few frames. For a physical feel (coasting
     /// throws), start from [`RapierLayoutConfig::default`].
     ///
@@ -441,8 +443,8 @@ impl RapierLayoutConfig {
     /// 347); the stiffer hub springs and the bias of `force_directed()` would press
     /// twice as many together without contacts. In exchange the broad and narrow
     /// phases, which dominate the step of a large graph, are gone. Measured on
-    /// `n10000_e25000` (README): under 16 ms per step while the graph unfolds, where
-    /// `force_directed()` averages 45 ms.
+    /// `n10000_e25000` (README): 11.2 ms per step over frames 30–270, where
+    /// `force_directed()` takes 36.6 ms.
     ///
     /// # Example
     /// ```

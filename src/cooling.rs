@@ -54,10 +54,10 @@ pub struct Cooling {
     /// the same. Below 1 springs outlast repulsion as the layout cools and edges draw
     /// toward their rest length at the end: with the other
     /// [`force_directed`](crate::RapierLayoutConfig::force_directed) settings, 0.7 takes
-    /// `tree_1023`'s edge-length CV from 0.64 to 0.52 and `grid_30x30`'s from 0.31 to
-    /// 0.27. The price is pressure: the final pull presses large graphs together (the
+    /// `tree_1023`'s edge-length CV from 0.65 to 0.53 and `grid_30x30`'s from 0.30 to
+    /// 0.24 (ten-start means). The price is pressure: the final pull presses large graphs together (the
     /// mean edge of `n10000_e25000` falls from 720 to 600), so contacts are busier and
-    /// need a second solver iteration to hold it; lower exponents compact the layout
+    /// need more than one solver pass to hold it; lower exponents compact the layout
     /// further. Values outside `[0, 1]`, or not finite, count as 1. Default: `1.0`
     /// ([`RapierLayoutConfig::force_directed`](crate::RapierLayoutConfig::force_directed)
     /// uses `0.7`).
@@ -70,8 +70,8 @@ pub struct Cooling {
     /// [`ContactSoftness::natural_frequency`](crate::ContactSoftness) at the floor, so
     /// nodes slip past each other instead of jamming while the graph spreads, and no
     /// overlap remains at rest. Later reheats (drags, edits) keep contacts firm, so a
-    /// dragged node always pushes. With the other `force_directed()` settings, 5 Hz takes
-    /// `n10000_e25000` from 60 to 45 ms per step and the CV of `n1000_e2500` from 0.41 to
+    /// dragged node always pushes. With the other `force_directed()` settings (measured
+    /// with two solver iterations), 5 Hz takes `n10000_e25000` from 60 to 45 ms per step and the CV of `n1000_e2500` from 0.41 to
     /// 0.38; the six small graphs do not change. Costs nothing per step. Default: `None`
     /// ([`RapierLayoutConfig::force_directed`](crate::RapierLayoutConfig::force_directed)
     /// uses 5 Hz).

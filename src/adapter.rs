@@ -957,11 +957,14 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let heat = match config.cooling {
             Some(cooling) => {
                 // Springs follow the heat in steps of 5 %: each re-tune touches every joint.
+                // A graph far from its rest lengths lets them fade with the heat itself.
                 let target = cooling.spring_scale(self.alpha);
                 let scale = world.spring_scale();
                 let at_floor = self.alpha <= cooling.floor();
                 if (target - scale).abs() > 0.05 * scale || at_floor {
-                    world.set_spring_scale(target); // a no-op when already there
+                    let limit = cooling.stretch_limit.unwrap_or(f32::INFINITY);
+                    // A no-op when already there.
+                    world.set_spring_scale_by_stretch(target, self.alpha, limit);
                 }
                 if self.unfolding {
                     let cold = contact_softness.coefficients().natural_frequency;

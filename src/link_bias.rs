@@ -40,7 +40,7 @@ pub(crate) struct LinkBias {
 impl LinkBias {
     /// Adds `gain` (clamped to `[0, 1]`) times the bias of every spring to `forces`,
     /// indexed by slot like `points`, the bodies' positions. Springs are scaled by the
-    /// world's spring scale, like the joints.
+    /// factor the world's joints have now.
     pub(crate) fn add_forces<N: Clone + Eq + std::hash::Hash>(
         &mut self,
         world: &RapierSceneWorld<N>,
@@ -59,7 +59,7 @@ impl LinkBias {
         if self.version != Some(world.version()) {
             self.rebuild(world);
         }
-        let scale = world.spring_scale();
+        let scale = world.applied_spring_scale();
         for spring in &self.springs {
             let (a, b) = (spring.a as usize, spring.b as usize);
             let (Some(&pa), Some(&pb)) = (points.get(a), points.get(b)) else {

@@ -150,8 +150,13 @@ pub struct RapierSceneWorld<N> {
     dropped_events: u64,
     recovered: Vec<N>,
     topology_hash: u64,
-    /// Factor on every spring's stiffness and damping (a cooling layout's heat).
+    /// The factors of the last [`RapierSceneWorld::set_spring_scale_by_stretch`]: `near`,
+    /// `far`, the stretch limit, and the factor on every spring's stiffness and damping
+    /// they gave (a cooling layout's heat).
     spring_scale: f32,
+    far_spring_scale: f32,
+    stretch_limit: f32,
+    applied_spring_scale: f32,
     /// The timestep joints are tuned for: the last [`set_timestep`](Self::set_timestep),
     /// not the substep a call happens to run (a short frame must not stiffen springs
     /// re-tuned during it).
@@ -234,6 +239,9 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             recovered: Vec::new(),
             topology_hash: 0,
             spring_scale: 1.0,
+            far_spring_scale: 1.0,
+            stretch_limit: f32::INFINITY,
+            applied_spring_scale: 1.0,
             joint_dt: IntegrationParameters::default().dt,
             version: 0,
             contacts_enabled: true,
@@ -406,7 +414,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             return false;
         }
         let (body_a, body_b) = (sa.body, sb.body);
-        let Some(joint) = self.joint_data(ia, ib, kind) else {
+        let Some(joint) = self.joint_data(ia, ib, kind, self.applied_spring_scale) else {
             return false;
         };
         let handle = self.impulse_joints.insert(body_a, body_b, joint, true);
@@ -458,7 +466,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
                 self.index.get(&self.joints[i].b),
             );
             let built = match ends {
-                (Some(&ia), Some(&ib)) => self.joint_data(ia, ib, &kind),
+                (Some(&ia), Some(&ib)) => self.joint_data(ia, ib, &kind, self.applied_spring_scale),
                 _ => None,
             };
             match built {
@@ -497,11 +505,67 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// assert_eq!(world.edge_joint(&0, &1), Some(EdgeJoint::default()), "the kind is unscaled");
     /// ```
     pub fn set_spring_scale(&mut self, scale: f32) -> usize {
-        let scale = finite_or(scale, 0.0).max(0.0);
-        if scale.to_bits() == self.spring_scale.to_bits() {
+        self.set_spring_scale_by_stretch(scale, scale, f32::INFINITY)
+    }
+
+    /// Like [`set_spring_scale`](Self::set_spring_scale), choosing the factor by how far
+    /// the graph is from its rest lengths: every spring is scaled by `near` while the
+    /// springs' median stretch (length over rest length, read now) is at most
+    /// `stretch_limit`, by `far` once it is twice that or more, and by a geometric blend
+    /// of the two in between. A non-finite or non-positive limit always gives `near`.
+    /// A cooling layout passes `heat^spring_exponent`, the heat and
+    /// [`Cooling::stretch_limit`](crate::Cooling::stretch_limit). Calls with the same three
+    /// values as the last are skipped. Returns how many joints changed.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, EdgeJoint, NodeAvatarBinding,
+    ///     NodeSnapshot, RapierSceneWorld};
+    /// let mut world = RapierSceneWorld::new();
+    /// let snap = |id, x| NodeSnapshot { id, position: Point2D::new(x, 0.0), radius: 16.0, pinned: false };
+    /// let bind = |id| NodeAvatarBinding::circle(id, 16.0);
+    /// world.build_bodies(&[bind(0_u32), bind(1)], &[snap(0, 0.0), snap(1, 450.0)]);
+    /// world.insert_edge_joint(&0, &1, &EdgeJoint::default()); // rest length 100
+    /// // Stretched 4.5 times: half way from a limit of 3 to twice it.
+    /// assert_eq!(world.set_spring_scale_by_stretch(0.04, 0.01, 3.0), 1);
+    /// assert!((world.applied_spring_scale() - 0.02).abs() < 1e-6, "{}", world.applied_spring_scale());
+    /// // Within 10 times its rest length: `near`.
+    /// world.set_spring_scale_by_stretch(0.04, 0.01, 10.0);
+    /// assert_eq!(world.applied_spring_scale(), 0.04);
+    /// ```
+    pub fn set_spring_scale_by_stretch(
+        &mut self,
+        near: f32,
+        far: f32,
+        stretch_limit: f32,
+    ) -> usize {
+        let near = finite_or(near, 0.0).max(0.0);
+        let far = finite_or(far, 0.0).max(0.0);
+        let limit = if stretch_limit.is_finite() && stretch_limit > 0.0 {
+            stretch_limit
+        } else {
+            f32::INFINITY
+        };
+        if (near, far, limit) == (self.spring_scale, self.far_spring_scale, self.stretch_limit) {
             return 0;
         }
-        self.spring_scale = scale;
+        self.spring_scale = near;
+        self.far_spring_scale = far;
+        self.stretch_limit = limit;
+        let blend = if limit.is_finite() {
+            (self.median_spring_stretch() / limit - 1.0).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        let scale = if blend > 0.0 {
+            finite_or(near.powf(1.0 - blend) * far.powf(blend), near)
+        } else {
+            near
+        };
+        if scale.to_bits() == self.applied_spring_scale.to_bits() {
+            return 0;
+        }
+        self.applied_spring_scale = scale;
         let mut changed = 0;
         for joint in &self.joints {
             if !matches!(joint.kind, EdgeJoint::Spring { .. }) {
@@ -512,7 +576,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
                 continue;
             };
             if let (Some(data), Some(rapier)) = (
-                self.joint_data(ia, ib, &joint.kind),
+                self.joint_data(ia, ib, &joint.kind, scale),
                 self.impulse_joints.get_mut(joint.handle, false),
             ) {
                 rapier.data = data;
@@ -522,18 +586,43 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         changed
     }
 
+    /// The median of length over rest length across the springs (0 without any).
+    fn median_spring_stretch(&self) -> f32 {
+        let mut stretches: Vec<f32> = self
+            .springs()
+            .filter_map(|(a, b, rest_length, _, _)| {
+                let length = (self.position_at(a) - self.position_at(b)).length();
+                let stretch = length / rest_length;
+                stretch.is_finite().then_some(stretch)
+            })
+            .collect();
+        if stretches.is_empty() {
+            return 0.0;
+        }
+        let mid = stretches.len() / 2;
+        *stretches.select_nth_unstable_by(mid, f32::total_cmp).1
+    }
+
     /// The rapier joint for `kind` between the bodies in slots `a` and `b`: springs
-    /// scaled by the current spring scale and capped for the bodies' reduced mass at
-    /// the joint timestep.
-    fn joint_data(&self, a: u32, b: u32, kind: &EdgeJoint) -> Option<GenericJoint> {
+    /// scaled by `scale` and capped for the bodies' reduced mass at the joint timestep.
+    fn joint_data(&self, a: u32, b: u32, kind: &EdgeJoint, scale: f32) -> Option<GenericJoint> {
         let (ma, mb) = (self.slots[a as usize].mass, self.slots[b as usize].mass);
-        let built = scaled_spring(kind, |x| x * self.spring_scale);
+        let built = scaled_spring(kind, |x| x * scale);
         rapier_joint(&built, ma * mb / (ma + mb), self.joint_dt)
     }
 
-    /// The factor [`set_spring_scale`](Self::set_spring_scale) last set (1 by default).
+    /// The factor [`set_spring_scale`](Self::set_spring_scale) last set, or the `near`
+    /// factor of [`set_spring_scale_by_stretch`](Self::set_spring_scale_by_stretch)
+    /// (1 by default).
     pub fn spring_scale(&self) -> f32 {
         self.spring_scale
+    }
+
+    /// The factor every spring's stiffness and damping has now: what the last
+    /// [`set_spring_scale_by_stretch`](Self::set_spring_scale_by_stretch) chose (1 by
+    /// default).
+    pub fn applied_spring_scale(&self) -> f32 {
+        self.applied_spring_scale
     }
 
     /// Every spring joint as `(slot a, slot b, rest length, stiffness, stiffness cap)`,

@@ -357,3 +357,91 @@ fn a_configuration_change_moves_a_stopped_layout() {
         "four times the repulsion moved no node more than {moved} in half a second"
     );
 }
+
+/// A random graph of `n` nodes and `e` distinct edges scattered over 1,200 units, far
+/// too dense to be drawn at its rest lengths.
+fn dense_random_graph(n: u32, e: usize) -> CanvasSceneInput<u32> {
+    let mut seed = 12_345_u64;
+    let mut next = move || {
+        seed = seed
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (seed >> 33) as u32
+    };
+    let nodes = (0..n)
+        .map(|id| {
+            let x = (next() % 1200) as f32 - 600.0;
+            let y = (next() % 1200) as f32 - 600.0;
+            node(id, x, y)
+        })
+        .collect();
+    let mut seen = std::collections::HashSet::new();
+    let mut edges = Vec::new();
+    while edges.len() < e {
+        let (a, b) = (next() % n, next() % n);
+        if a != b && seen.insert((a.min(b), a.max(b))) {
+            edges.push(edge(a, b));
+        }
+    }
+    CanvasSceneInput::new(nodes, edges)
+}
+
+#[test]
+fn a_graph_too_dense_for_its_rest_lengths_stops_creeping_as_it_cools() {
+    // Mean node speed over frames 420-480 (heat 0.002 to 0.001), and the spring
+    // factor at frame 420 against the heat.
+    let run = |stretch_limit: Option<f32>| {
+        let mut config = RapierLayoutConfig::force_directed();
+        config.cooling.as_mut().unwrap().stretch_limit = stretch_limit;
+        let mut host = Host::new(dense_random_graph(500, 10_000), config);
+        host.frames(420);
+        let heat = host.layout.heat().unwrap();
+        let springs = host.layout.world().unwrap().applied_spring_scale();
+        let mut speed = 0.0;
+        for _ in 0..60 {
+            let deltas = host.frame(FRAME);
+            speed += deltas.values().map(|d| d.length() / FRAME).sum::<f32>() / 500.0 / 60.0;
+        }
+        (speed, springs, heat)
+    };
+    let (limited, springs, heat) = run(RapierLayoutConfig::force_directed()
+        .cooling
+        .unwrap()
+        .stretch_limit);
+    let (unlimited, full, _) = run(None);
+    // The median edge is between two and four times its rest length: springs fade
+    // with a blend of the heat and heat^0.7. Springs are re-tuned in 5 % steps at the
+    // start of a frame and the heat is read at its end, 1 % cooler: within 7 %.
+    let outlasting = heat.powf(0.7);
+    assert!(
+        springs < 0.5 * outlasting && springs >= heat,
+        "springs {springs} at heat {heat} (heat^0.7 {outlasting})"
+    );
+    assert!(
+        (full / outlasting - 1.0).abs() <= 0.07,
+        "without the limit springs follow heat^0.7 ({outlasting}): {full}"
+    );
+    // Without it the long springs pack the graph and nodes creep through the jam.
+    assert!(
+        limited < 0.6 * unlimited,
+        "mean speed at the end of the schedule {limited} units/s, {unlimited} without the limit"
+    );
+}
+
+#[test]
+fn graphs_near_their_rest_lengths_keep_springs_that_outlast_repulsion() {
+    let mut host = Host::new(
+        load_scene("les_miserables"),
+        RapierLayoutConfig::force_directed(),
+    );
+    host.frames(300);
+    let heat = host.layout.heat().unwrap();
+    let springs = host.layout.world().unwrap().applied_spring_scale();
+    // Re-tuned in 5 % steps at the start of a frame, the heat read at its end (1 %
+    // cooler): within 7 %.
+    let expected = heat.powf(0.7);
+    assert!(
+        (springs / expected - 1.0).abs() <= 0.07,
+        "springs {springs} at heat {heat}, expected about {expected}"
+    );
+}

@@ -73,12 +73,60 @@ fn coincident_points_build_and_push_finitely() {
         Vector2D::zero(),
         "coincident points have no direction to push along"
     );
+}
+
+#[test]
+fn one_pass_never_takes_a_cell_holding_the_point_whole() {
+    // A coincident cluster and one lone point: with a huge theta the whole tree would
+    // pass as one far body for the lone point, counting its own charge.
+    let mut points = vec![Point2D::new(100.0, 0.0); 20];
+    points.push(Point2D::new(0.0, 0.0));
+    let r = Repulsion {
+        theta: 10.0,
+        ..Repulsion::default()
+    };
+    let mut tree = ManyBody::default();
+    tree.build(&points);
     let mut all = Vec::new();
-    tree.forces(1000.0, 0.9, 1.0, |_| true, &mut all);
-    assert!(
-        all.iter().all(|f| *f == Vector2D::zero()),
-        "one pass pushed coincident points: {all:?}"
-    );
+    tree.forces(r.strength, r.theta, r.min_distance, |_| true, &mut all);
+    for (i, f) in all.iter().enumerate() {
+        let exact = brute_force(&points, i, &r);
+        // One or two terms each: only f32 rounding differs.
+        assert!(
+            (*f - exact).length() <= 1e-5 * exact.length(),
+            "point {i}: {f:?} against the exact {exact:?}"
+        );
+    }
+}
+
+#[test]
+fn one_pass_leaves_non_finite_points_out() {
+    let mut points = scene_points("n200_e500");
+    points[7] = Point2D::new(f32::NAN, 0.0);
+    points[9] = Point2D::new(f32::INFINITY, 3.0);
+    let r = Repulsion::default();
+    let mut tree = ManyBody::default();
+    tree.build(&points);
+    let mut all = Vec::new();
+    tree.forces(r.strength, 0.0, r.min_distance, |_| true, &mut all);
+    assert_eq!((all[7], all[9]), (Vector2D::zero(), Vector2D::zero()));
+    let finite: Vec<Point2D<f32>> = points
+        .iter()
+        .copied()
+        .filter(|p| p.x.is_finite() && p.y.is_finite())
+        .collect();
+    let mut k = 0;
+    for (i, f) in all.iter().enumerate() {
+        if i == 7 || i == 9 {
+            continue;
+        }
+        let exact = brute_force(&finite, k, &r);
+        k += 1;
+        assert!(
+            (*f - exact).length() < 1e-4 * exact.length(),
+            "point {i}: {f:?} against the exact {exact:?} without the non-finite points"
+        );
+    }
 }
 
 #[test]

@@ -6,9 +6,9 @@
 //! Run with `cargo run --release --example quality [--fast] [--starts N] [--leave-out
 //! SETTING] [scene ...]` (`--fast`: `RapierLayoutConfig::force_directed_fast()`;
 //! `--leave-out`: one of `spring_exponent`, `spring_degree_exponent`, `link_bias`,
-//! `first_contact_heat`, `hot_contact_frequency`, `accuracy` switched back to d3's plain
-//! setting or rapier's two iterations, as in the README's table); any shipped scene may be
-//! named (`n1000_e2500`, `n10000_e25000`). Overlaps and crossings are counted pairwise,
+//! `first_contact_heat`, `hot_contact_frequency`, `stretch_limit`, `accuracy` switched
+//! back to d3's plain setting or rapier's two iterations, as in the README's table); any
+//! shipped scene may be named (`n1000_e2500`, `n10000_e25000`). Overlaps and crossings are counted pairwise,
 //! so above 3,000 nodes or edges they are left out ("-"), as in the d3 script.
 //!
 //! `--starts N` lays each scene out N times, from the file's positions and then from
@@ -80,10 +80,11 @@ fn leave_out(config: &mut RapierLayoutConfig, setting: &str) {
         "link_bias" => config.link_bias = 0.0,
         "first_contact_heat" => cooling.first_contact_heat = None,
         "hot_contact_frequency" => cooling.hot_contact_frequency = None,
+        "stretch_limit" => cooling.stretch_limit = None,
         "accuracy" => config.accuracy = Accuracy::Balanced,
         other => panic!(
             "--leave-out takes spring_exponent, spring_degree_exponent, link_bias, \
-             first_contact_heat, hot_contact_frequency or accuracy, not {other:?}"
+             first_contact_heat, hot_contact_frequency, stretch_limit or accuracy, not {other:?}"
         ),
     }
 }

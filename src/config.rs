@@ -390,10 +390,9 @@ impl RapierLayoutConfig {
     ///   for a little more spread on karate and trees (README).
     ///
     /// Every shipped graph comes to rest (every body asleep, or halted at the end of the
-    /// schedule) within 9 s of simulated
-    /// time after the last disturbance. Contacts dominate the step of large random
-    /// graphs (36.6 ms per step over frames 30–270 at 10,000 nodes, 41 ms averaged
-    /// until rest); for thousands of nodes
+    /// schedule) within 9 s of simulated time after the last disturbance. Contacts
+    /// dominate the step of large random graphs (27.4 ms per step over frames 30–270
+    /// at 10,000 nodes, 24 ms averaged until rest); for thousands of nodes
     /// [`force_directed_fast`](Self::force_directed_fast) takes 11 ms. The damping
     /// is d3's: a throw stops within a few frames. For a physical feel (coasting
     /// throws), start from [`RapierLayoutConfig::default`].
@@ -448,7 +447,7 @@ impl RapierLayoutConfig {
     /// twice as many together without contacts. In exchange the broad and narrow
     /// phases, which dominate the step of a large graph, are gone. Measured on
     /// `n10000_e25000` (README): 11.2 ms per step over frames 30–270, where
-    /// `force_directed()` takes 36.6 ms.
+    /// `force_directed()` takes 27.4 ms.
     ///
     /// # Example
     /// ```

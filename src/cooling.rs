@@ -73,7 +73,7 @@ pub struct Cooling {
     /// as the layout cools, into a jam of some 50,000 touching pairs whose nodes creep
     /// through each other until the cold stop, and those contacts cost most of the
     /// step. With the other [`force_directed`](crate::RapierLayoutConfig::force_directed)
-    /// settings, 2 takes `n10000_e25000` from 41 to 27 ms per step on average until
+    /// settings, 2 takes `n10000_e25000` from 41 to 24 ms per step on average until
     /// rest and its median node speed at heat 0.0015 from about 200 to 20 units/s, for
     /// an edge-length CV of 0.50 against 0.47 (d3-force: 0.50). The six small shipped
     /// graphs stay below the limit (their CVs move in the third decimal at most) and
@@ -92,8 +92,9 @@ pub struct Cooling {
     /// nodes slip past each other instead of jamming while the graph spreads, and no
     /// overlap remains at rest. Later reheats (drags, edits) keep contacts firm, so a
     /// dragged node always pushes. With the other `force_directed()` settings (measured
-    /// with two solver iterations), 5 Hz takes `n10000_e25000` from 60 to 45 ms per step and the CV of `n1000_e2500` from 0.41 to
-    /// 0.38; the six small graphs do not change. Costs nothing per step. Default: `None`
+    /// with two solver iterations and before [`stretch_limit`](Self::stretch_limit)),
+    /// 5 Hz took `n10000_e25000` from 60 to 45 ms per step and the CV of `n1000_e2500`
+    /// from 0.41 to 0.38; the six small graphs do not change. Costs nothing per step. Default: `None`
     /// ([`RapierLayoutConfig::force_directed`](crate::RapierLayoutConfig::force_directed)
     /// uses 5 Hz).
     pub hot_contact_frequency: Option<f32>,

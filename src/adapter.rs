@@ -956,8 +956,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let mut contact_softness = config.contact_softness;
         let heat = match config.cooling {
             Some(cooling) => {
-                // Springs follow the heat in steps of 5 %: each re-tune touches every joint.
-                // A graph far from its rest lengths lets them fade with the heat itself.
+                // Springs follow heat^spring_exponent in steps of 5 %: each re-tune touches
+                // every joint. A graph far from its rest lengths lets them fade toward the
+                // heat itself (blended by its median stretch, read at each re-tune).
                 let target = cooling.spring_scale(self.alpha);
                 let scale = world.spring_scale();
                 let at_floor = self.alpha <= cooling.floor();

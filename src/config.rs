@@ -369,9 +369,10 @@ impl RapierLayoutConfig {
     ///   untangles trees and grids further before they freeze) that scales repulsion by
     ///   the heat and springs by `heat^0.7` ([`Cooling::spring_exponent`]), so edges draw
     ///   toward their rest length as the layout cools, unless the springs' median length
-    ///   is over twice their rest length ([`Cooling::stretch_limit`] 2): such a graph
-    ///   cannot reach its rest lengths, and springs that outlast repulsion would only
-    ///   pack it into a creeping jam of contacts;
+    ///   is over twice their rest length ([`Cooling::stretch_limit`] 2; fully like the
+    ///   heat from four times, blended in between): such a graph cannot reach its rest
+    ///   lengths, and springs that outlast repulsion would only pack it into a creeping
+    ///   jam of contacts;
     /// - collide at the node radius: firm contacts (240 Hz, ζ = 1, [`ContactSoftness`])
     ///   that no spring presses through. On the first unfolding only, they are left out
     ///   until the heat falls to 0.3 ([`Cooling::first_contact_heat`]) and then firm up

@@ -157,6 +157,9 @@ pub struct RapierSceneWorld<N> {
     far_spring_scale: f32,
     stretch_limit: f32,
     applied_spring_scale: f32,
+    /// [`version`](RapierSceneWorld::version) when the median stretch was last read: an
+    /// edit re-reads it even at unchanged factors.
+    spring_scale_version: u64,
     /// The timestep joints are tuned for: the last [`set_timestep`](Self::set_timestep),
     /// not the substep a call happens to run (a short frame must not stiffen springs
     /// re-tuned during it).
@@ -242,6 +245,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             far_spring_scale: 1.0,
             stretch_limit: f32::INFINITY,
             applied_spring_scale: 1.0,
+            spring_scale_version: 0,
             joint_dt: IntegrationParameters::default().dt,
             version: 0,
             contacts_enabled: true,
@@ -486,7 +490,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     /// Multiplies every spring's stiffness and damping by `scale` (relative to the kind
     /// it was inserted as), in place and without waking anything; new springs take the
-    /// factor too. A cooling layout passes its heat here. Non-finite or negative values
+    /// factor too. A cooling layout passes its spring factor through
+    /// [`set_spring_scale_by_stretch`](Self::set_spring_scale_by_stretch). Non-finite or negative values
     /// count as 0. Returns how many joints changed.
     ///
     /// # Example
@@ -515,7 +520,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// of the two in between. A non-finite or non-positive limit always gives `near`.
     /// A cooling layout passes `heat^spring_exponent`, the heat and
     /// [`Cooling::stretch_limit`](crate::Cooling::stretch_limit). Calls with the same three
-    /// values as the last are skipped. Returns how many joints changed.
+    /// values as the last are skipped unless bodies or joints changed since (the median
+    /// is read again then). Returns how many joints changed.
     ///
     /// # Example
     /// ```
@@ -546,13 +552,18 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         } else {
             f32::INFINITY
         };
-        if (near, far, limit) == (self.spring_scale, self.far_spring_scale, self.stretch_limit) {
+        // The median matters only between two different factors.
+        let by_stretch = limit.is_finite() && near.to_bits() != far.to_bits();
+        if (near, far, limit) == (self.spring_scale, self.far_spring_scale, self.stretch_limit)
+            && (!by_stretch || self.spring_scale_version == self.version)
+        {
             return 0;
         }
         self.spring_scale = near;
         self.far_spring_scale = far;
         self.stretch_limit = limit;
-        let blend = if limit.is_finite() {
+        self.spring_scale_version = self.version;
+        let blend = if by_stretch {
             (self.median_spring_stretch() / limit - 1.0).clamp(0.0, 1.0)
         } else {
             0.0
@@ -590,6 +601,9 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     fn median_spring_stretch(&self) -> f32 {
         let mut stretches: Vec<f32> = self
             .springs()
+            // A rest length that is not finite and positive builds a joint of rest 0
+            // (infinitely stretched): left out, as it says nothing about the layout.
+            .filter(|&(_, _, rest_length, _, _)| rest_length.is_finite() && rest_length > 0.0)
             .filter_map(|(a, b, rest_length, _, _)| {
                 let length = (self.position_at(a) - self.position_at(b)).length();
                 let stretch = length / rest_length;

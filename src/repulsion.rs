@@ -155,13 +155,11 @@ impl ManyBody {
             let cell = self.cells[c];
             let (mut q, mut mx, mut my) = (0.0_f32, 0.0_f32, 0.0_f32);
             if cell.children == NONE {
-                let mut b = cell.body;
-                while b != NONE {
+                for b in self.chain(cell.body) {
                     let p = self.points[b as usize];
                     q += 1.0;
                     mx += p.x;
                     my += p.y;
-                    b = self.next[b as usize];
                 }
             } else {
                 for k in 0..4 {
@@ -293,12 +291,7 @@ impl ManyBody {
         while let Some(g) = stack.pop() {
             let node = self.nodes[g as usize];
             if node.charge > GROUP_SIZE as f32 && node.children != NONE {
-                let nodes = &self.nodes;
-                stack.extend(
-                    (node.children..node.children + 4)
-                        .rev()
-                        .filter(|&k| nodes[k as usize].charge > 0.0),
-                );
+                stack.extend(self.occupied_children(node.children).rev());
                 continue;
             }
             lists.collect_members(self, g, &wanted);
@@ -333,17 +326,11 @@ impl ManyBody {
                     let s = query.strength * node.charge / d_sq.max(query.min_sq);
                     f += Vector2D::new(dx, dy) * s;
                 } else {
-                    // Empty quadrants add nothing: never visit them.
-                    let nodes = &self.nodes;
-                    stack.extend(
-                        (node.children..node.children + 4)
-                            .filter(|&k| nodes[k as usize].charge > 0.0),
-                    );
+                    stack.extend(self.occupied_children(node.children));
                 }
                 continue;
             }
-            let mut b = node.body;
-            while b != NONE {
+            for b in self.chain(node.body) {
                 if b as usize != i {
                     let q = self.points[b as usize];
                     let (dx, dy) = (p.x - q.x, p.y - q.y);
@@ -352,10 +339,23 @@ impl ManyBody {
                         f += Vector2D::new(dx, dy) * (query.strength / d_sq.max(query.min_sq));
                     }
                 }
-                b = self.next[b as usize];
             }
         }
         f
+    }
+
+    /// The points of the leaf chain starting at `first`.
+    fn chain(&self, first: u32) -> impl Iterator<Item = u32> + '_ {
+        std::iter::successors((first != NONE).then_some(first), move |&b| {
+            let next = self.next[b as usize];
+            (next != NONE).then_some(next)
+        })
+    }
+
+    /// The children (first at `children`) that hold a point: empty quadrants add
+    /// nothing and are never visited.
+    fn occupied_children(&self, children: u32) -> impl DoubleEndedIterator<Item = u32> + '_ {
+        (children..children + 4).filter(move |&k| self.nodes[k as usize].charge > 0.0)
     }
 }
 
@@ -420,8 +420,7 @@ impl GroupLists {
                 self.stack.extend(node.children..node.children + 4);
                 continue;
             }
-            let mut b = node.body;
-            while b != NONE {
+            for b in tree.chain(node.body) {
                 let p = tree.points[b as usize];
                 self.lo = self.lo.min(p);
                 self.hi = self.hi.max(p);
@@ -429,7 +428,6 @@ impl GroupLists {
                     index: b,
                     wanted: wanted(b as usize),
                 });
-                b = tree.next[b as usize];
             }
         }
         // The path any member took when it was inserted, found the same way.
@@ -457,11 +455,8 @@ impl GroupLists {
         while let Some(c) = self.stack.pop() {
             if c == g {
                 // The members themselves, exactly.
-                for m in &self.members {
-                    let q = tree.points[m.index as usize];
-                    self.x.push(q.x);
-                    self.y.push(q.y);
-                    self.charge.push(1.0);
+                for i in 0..self.members.len() {
+                    self.push(tree.points[self.members[i].index as usize], 1.0);
                 }
                 continue;
             }
@@ -473,28 +468,25 @@ impl GroupLists {
                 let dx = (self.lo.x - node.mx).max(node.mx - self.hi.x).max(0.0);
                 let dy = (self.lo.y - node.my).max(node.my - self.hi.y).max(0.0);
                 if node.width_sq < query.theta_sq * (dx * dx + dy * dy) {
-                    self.x.push(node.mx);
-                    self.y.push(node.my);
-                    self.charge.push(node.charge);
+                    self.push(Point2D::new(node.mx, node.my), node.charge);
                     continue;
                 }
             }
             if node.children != NONE {
-                let nodes = &tree.nodes;
-                self.stack.extend(
-                    (node.children..node.children + 4).filter(|&k| nodes[k as usize].charge > 0.0),
-                );
+                self.stack.extend(tree.occupied_children(node.children));
                 continue;
             }
-            let mut b = node.body;
-            while b != NONE {
-                let q = tree.points[b as usize];
-                self.x.push(q.x);
-                self.y.push(q.y);
-                self.charge.push(1.0);
-                b = tree.next[b as usize];
+            for b in tree.chain(node.body) {
+                self.push(tree.points[b as usize], 1.0);
             }
         }
+    }
+
+    /// Adds a charge at `at` to the list.
+    fn push(&mut self, at: Point2D<f32>, charge: f32) {
+        self.x.push(at.x);
+        self.y.push(at.y);
+        self.charge.push(charge);
     }
 
     /// The force on point `p` from the lists, in [`LANES`] independent sums (so the

@@ -31,12 +31,7 @@ fn les_miserables_settles_and_then_emits_no_visible_motion() {
             "left rest without a disturbance"
         );
     }
-    let drift = host
-        .scene
-        .nodes
-        .iter()
-        .map(|n| dist(n.position, at_rest[&n.id]))
-        .fold(0.0, f32::max);
+    let drift = farthest_moved(&host.scene, &at_rest);
     // Sub-pixel: rest speed is 5 units/s, so at most 0.08 units per frame until sleep.
     assert!(
         largest < 0.1,

@@ -345,12 +345,7 @@ fn a_configuration_change_moves_a_stopped_layout() {
         repulsion.strength *= 4.0;
     }
     host.frames(30);
-    let moved = host
-        .scene
-        .nodes
-        .iter()
-        .map(|n| dist(n.position, before[&n.id]))
-        .fold(0.0_f32, f32::max);
+    let moved = farthest_moved(&host.scene, &before);
     assert!(
         moved > 10.0,
         "four times the repulsion moved no node more than {moved} in half a second"

@@ -115,6 +115,19 @@ pub fn load_scene(name: &str) -> CanvasSceneInput<u32> {
     file.into_scene()
 }
 
+/// The farthest any node of `scene` is from where `before` (a [`positions`] snapshot)
+/// had it.
+pub fn farthest_moved<N: Clone + Eq + Hash>(
+    scene: &CanvasSceneInput<N>,
+    before: &HashMap<N, Point2D<f32>>,
+) -> f32 {
+    scene
+        .nodes
+        .iter()
+        .map(|n| dist(n.position, before[&n.id]))
+        .fold(0.0, f32::max)
+}
+
 pub fn positions<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> HashMap<N, Point2D<f32>> {
     scene
         .nodes

@@ -19,14 +19,14 @@ use serde::{Deserialize, Serialize};
 use crate::bindings::{ColliderSpec, NodeAvatarBinding, SceneBodyKind};
 use crate::config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, TopologyUpdate};
 use crate::events::SceneEvent;
+use crate::input::scene::{CanvasNode, CanvasSceneInput, CanvasViewport};
+use crate::input::topology::Topology;
+use crate::input::validation::{node_is_valid, validate, LayoutError};
 use crate::joints::scaled_spring;
 use crate::layout::{DeltaMap, IdHasher, Layout, LayoutExtras};
 use crate::link_bias::LinkBias;
 use crate::repulsion::ManyBody;
-use crate::scene::{CanvasNode, CanvasSceneInput, CanvasViewport};
 use crate::timestep::{StepPlan, DEFAULT_TIMESTEP};
-use crate::topology::Topology;
-use crate::validation::{node_is_valid, validate, LayoutError};
 use crate::world::{finite_or, RapierSceneWorld, WorldOptions};
 
 /// How long (simulated seconds) every dynamic body must stay under

@@ -5,7 +5,7 @@ use std::collections::{HashMap, HashSet};
 use euclid::default::Vector2D;
 use serde::{de::DeserializeOwned, Serialize};
 
-use crate::scene::{CanvasSceneInput, CanvasViewport};
+use crate::input::scene::{CanvasSceneInput, CanvasViewport};
 
 /// The hasher behind [`DeltaMap`] and [`NodeSet`]: ahash, seeded per map.
 pub type IdHasher = ahash::RandomState;

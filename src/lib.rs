@@ -102,18 +102,14 @@
 mod adapter;
 mod bindings;
 mod config;
-mod cooling;
 mod events;
+mod input;
 mod joints;
 mod layout;
 mod link_bias;
 pub mod quality;
 mod repulsion;
-mod scene;
-mod scene_file;
 mod timestep;
-mod topology;
-mod validation;
 mod world;
 
 pub use euclid;
@@ -123,19 +119,20 @@ pub use adapter::{RapierLayout, RapierLayoutState, REST_TIME};
 pub use bindings::{
     ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot, PhysicsMaterial, SceneBodyKind,
 };
+pub use config::cooling::Cooling;
 pub use config::{
-    Accuracy, BodyKindPolicy, ContactSoftness, EdgeJoint, RapierLayoutConfig, TopologyUpdate,
+    Accuracy, BodyKindPolicy, ContactSoftness, EdgeJoint, RapierLayoutConfig, SolverSettings,
+    TopologyUpdate,
 };
-pub use cooling::Cooling;
 pub use events::SceneEvent;
+pub use input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
+pub use input::scene_file::{SceneFile, SceneFileNode};
+pub use input::topology::topology_hash;
+pub use input::validation::LayoutError;
 pub use joints::max_resolved_stiffness;
 pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeSet};
 pub use repulsion::{ManyBody, Repulsion};
-pub use scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
-pub use scene_file::{SceneFile, SceneFileNode};
 pub use timestep::{StepPlan, DEFAULT_TIMESTEP, MIN_TIMESTEP};
-pub use topology::topology_hash;
-pub use validation::LayoutError;
 pub use world::{
     RapierSceneWorld, WorldOptions, MAX_PENDING_EVENTS, MIN_BODY_MASS, POSITION_EPSILON,
 };

@@ -6,8 +6,8 @@ use std::hash::Hash;
 
 use euclid::default::Point2D;
 
+use crate::input::scene::CanvasSceneInput;
 use crate::layout::IdHasher;
-use crate::scene::CanvasSceneInput;
 
 /// The edges as segments (self-loops and edges naming missing nodes left out).
 fn segments<N: Clone + Eq + Hash>(

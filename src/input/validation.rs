@@ -6,8 +6,8 @@ use std::hash::Hash;
 
 use euclid::default::Point2D;
 
+use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::layout::IdHasher;
-use crate::scene::{CanvasNode, CanvasSceneInput};
 
 /// Bad input rejected by [`RapierLayout::try_step`](crate::RapierLayout::try_step). A
 /// rejected call changes nothing: not the world, not the state, not the counters.

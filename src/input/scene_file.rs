@@ -7,7 +7,7 @@
 use euclid::default::Point2D;
 use serde::{Deserialize, Serialize};
 
-use crate::scene::{CanvasEdge, CanvasNode, CanvasSceneInput};
+use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput};
 
 /// One node of a scene file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

@@ -1,0 +1,166 @@
+//! Configuration of the Rapier layout: [`RapierLayoutConfig`], every field with its
+//! effect, its trade-off and its default.
+//!
+//! The parts live beside it: what edges and pins become (`edge_joint`), the solver and
+//! contacts (`solver`), the cooling schedule (`cooling`) and the presets for laying
+//! graphs out (`presets`). The adapter reads the configuration once per call and decides
+//! there what a change costs (a rebuild, new joints, or nothing).
+
+use serde::{Deserialize, Serialize};
+
+use crate::bindings::PhysicsMaterial;
+use crate::repulsion::Repulsion;
+
+pub(crate) mod cooling;
+pub(crate) mod edge_joint;
+mod presets;
+pub(crate) mod solver;
+
+use cooling::Cooling;
+pub use edge_joint::{BodyKindPolicy, EdgeJoint};
+pub use solver::{Accuracy, ContactSoftness, SolverSettings};
+
+/// What to do when the topology hash changes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum TopologyUpdate {
+    /// Insert and remove only the bodies and joints that changed; untouched bodies keep
+    /// their position and velocity. Costs the change plus an O(n + e) diff.
+    #[default]
+    Incremental,
+    /// Build the whole world again from the host's positions (all motion is lost).
+    /// The plan's original behaviour; costs O(n + e) body and joint constructions.
+    Rebuild,
+}
+
+/// Configuration of [`RapierLayout`](crate::RapierLayout). Every field has a default;
+/// build one with `RapierLayoutConfig { field: value, ..Default::default() }`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct RapierLayoutConfig {
+    /// Radius, in world units, of the disk of every node whose `radius` is `0.0`: the
+    /// size contacts keep nodes apart at, and with the material's density its mass
+    /// (`density × π r²`), so a larger default also makes nodes heavier and slower to
+    /// follow springs. Changing it between calls rebuilds the world: every body starts
+    /// again at rest. Default: `16.0`.
+    pub default_radius: f32,
+    /// What each edge becomes: a spring, a rope, a rod or nothing ([`EdgeJoint`]).
+    /// Changing it between calls replaces every joint in place; bodies keep their
+    /// motion. Default: [`EdgeJoint::default`], a spring of rest length 100 and
+    /// stiffness 50.
+    pub edge_joint: EdgeJoint,
+    /// Body kinds for pinned and free nodes: anchors, kinematic pins, or nothing
+    /// simulated at all ([`BodyKindPolicy`]). Default: [`BodyKindPolicy::PinnedStatic`].
+    pub body_kind_policy: BodyKindPolicy,
+    /// Material of every node: density (mass), friction, restitution and damping
+    /// ([`PhysicsMaterial`]). Higher damping settles sooner and shortens throws. Changing
+    /// it between calls rebuilds the world: every body starts again at rest.
+    /// Default: [`PhysicsMaterial::default`].
+    pub material: PhysicsMaterial,
+    /// Longest frame time simulated in one call, in seconds; time beyond it is dropped
+    /// (after a stall the layout resumes instead of fast-forwarding). Default: `0.25`.
+    pub max_frame_time: f32,
+    /// Most substeps one call runs. With the default 1/60 s timestep, 16 substeps cover
+    /// the default `max_frame_time`. Lower it to bound the worst-case cost of a call;
+    /// simulated time beyond `max_substeps × timestep` is dropped. Default: `16`.
+    pub max_substeps: u32,
+    /// Rapier's `length_unit`: the size of a typical object in world units. Rapier scales
+    /// its tolerances (contact slop, sleep threshold, speed cap) by it. Canvas nodes are
+    /// about 30 pixels across and edges about 100, so the default suits pixel worlds.
+    /// Default: `100.0`.
+    pub length_unit: f32,
+    /// Speed cap in world units per second; rapier clamps faster bodies each substep.
+    /// A throw faster than this flies at the cap. Default: `40_000.0` (rapier's own
+    /// 400 lengths/s at `length_unit` 100).
+    pub max_speed: f32,
+    /// Whether nodes collide. Off, the world holds no colliders at all (bodies get their
+    /// mass directly), which saves the broad and narrow phases. Default: `true`.
+    pub collisions: bool,
+    /// Whether the world records contact begin/end events for
+    /// [`RapierLayout::drain_events`](crate::RapierLayout::drain_events). Off, no event
+    /// is produced or stored. Default: `false`.
+    pub contact_events: bool,
+    /// What a topology change does. Default: [`TopologyUpdate::Incremental`].
+    pub topology_update: TopologyUpdate,
+    /// The speed/accuracy trade of the solver; see [`Accuracy`] for what each preset
+    /// costs and buys. Default: [`Accuracy::Balanced`].
+    pub accuracy: Accuracy,
+    /// Speed, in world units per second, under which a body counts as calm:
+    /// [`Layout::is_converged`](crate::Layout::is_converged) reports rest once no
+    /// dynamic body was faster for 0.5 s and rapier has put every body to sleep (rapier
+    /// sleeps bodies slower than `0.05 × length_unit`, 5 units/s at the default, for
+    /// 0.5 s). Default: `5.0`.
+    pub rest_speed: f32,
+    /// Many-body repulsion (Barnes–Hut) and centre pull, or `None` for springs and
+    /// contacts only. Costs one quadtree build and one O(n log n) force pass per substep
+    /// while anything is awake. Default: `None` ([`RapierLayoutConfig::force_directed`]
+    /// turns it on).
+    pub repulsion: Option<Repulsion>,
+    /// Displacements shorter than this (world units) are left out of the returned map;
+    /// they stay owed to the host and are reported once they add up. Default: `1e-4`.
+    pub delta_epsilon: f32,
+    /// Divides each [`EdgeJoint::Spring`]'s stiffness and damping by
+    /// `min(degree)^exponent`, the smaller degree of its two ends: a hub's many springs
+    /// then pull less hard in sum, so hubs do not crush their neighbourhoods. `0` keeps
+    /// every spring as configured; `1` is d3-force's link strength `1 / min(degree)`.
+    /// Lower exponents stiffen the springs between well-connected nodes, which physical
+    /// springs need more than d3's links (a subtree's whole pull reaches its root edge):
+    /// 0.6 with the other `force_directed()` settings narrows the edge-length spread
+    /// (CV) on `tree_1023` from 0.60 to 0.52; lower still pulls dense cores into piles of
+    /// touching disks, compacts the layout and makes large random graphs unfold slower
+    /// (contacts). Degrees count distinct neighbours; a topology edit re-tunes the
+    /// springs whose ends changed degree. Costs nothing per step. Default: `0.0`
+    /// ([`RapierLayoutConfig::force_directed`] uses `0.6`).
+    pub spring_degree_exponent: f32,
+    /// A cooling schedule that brings the layout to rest in bounded time, or `None` to
+    /// let it run to its force equilibrium. With a schedule, springs, repulsion and
+    /// centre pull fade together over [`Cooling::duration`] after the last disturbance
+    /// and the layout stops near (not at) its equilibrium; see [`Cooling`]. Costs an
+    /// in-place re-tune of every spring each time the heat has fallen 5 % (about 140
+    /// times over a full schedule), nothing at rest. Default: `None`
+    /// ([`RapierLayoutConfig::force_directed`] turns it on).
+    pub cooling: Option<Cooling>,
+    /// How firmly contacts push overlapping nodes apart; see [`ContactSoftness`].
+    /// Default: [`ContactSoftness::default`], rapier's 30 Hz, ζ = 10
+    /// ([`RapierLayoutConfig::force_directed`] uses 240 Hz, ζ = 1).
+    pub contact_softness: ContactSoftness,
+    /// How unevenly a spring pulls its two ends, from 0 to 1. At 0 a spring is a
+    /// physical one: equal and opposite pulls. At 1 it shares its pull like d3-force's
+    /// link bias: each end takes a part proportional to the *other* end's degree (twice
+    /// the spring force in total, as before), so a leaf is drawn to its hub harder than
+    /// the hub to the leaf, and hubs are not dragged about by their many leaves. The
+    /// difference is an extra force on each end, applied with the body forces every
+    /// substep; it does not conserve momentum (the centre pull of [`Repulsion`] keeps
+    /// the graph in place). With the other `force_directed()` settings, 1 takes the
+    /// edge-length CV of `karate` from 0.19 to 0.17 and of `les_miserables` from 0.31 to
+    /// 0.29.
+    /// Costs one pass over the springs per substep. Clamped to `[0, 1]` (higher gains
+    /// are explicit forces stiffer than the step resolves); not finite counts as 0.
+    /// Default: `0.0` ([`RapierLayoutConfig::force_directed`] uses `1.0`).
+    pub link_bias: f32,
+}
+
+impl Default for RapierLayoutConfig {
+    fn default() -> Self {
+        Self {
+            default_radius: 16.0,
+            edge_joint: EdgeJoint::default(),
+            body_kind_policy: BodyKindPolicy::PinnedStatic,
+            material: PhysicsMaterial::default(),
+            max_frame_time: 0.25,
+            max_substeps: 16,
+            length_unit: 100.0,
+            max_speed: 40_000.0,
+            collisions: true,
+            contact_events: false,
+            topology_update: TopologyUpdate::Incremental,
+            accuracy: Accuracy::Balanced,
+            rest_speed: 5.0,
+            delta_epsilon: 1e-4,
+            repulsion: None,
+            spring_degree_exponent: 0.0,
+            cooling: None,
+            contact_softness: ContactSoftness::default(),
+            link_bias: 0.0,
+        }
+    }
+}

@@ -19,15 +19,15 @@ use serde::{Deserialize, Serialize};
 use crate::bindings::{ColliderSpec, NodeAvatarBinding, SceneBodyKind};
 use crate::config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, TopologyUpdate};
 use crate::events::SceneEvent;
+use crate::forces::Forces;
 use crate::input::scene::{CanvasNode, CanvasSceneInput, CanvasViewport};
 use crate::input::topology::Topology;
 use crate::input::validation::{node_is_valid, validate, LayoutError};
 use crate::joints::scaled_spring;
 use crate::layout::{DeltaMap, IdHasher, Layout, LayoutExtras};
-use crate::link_bias::LinkBias;
-use crate::repulsion::ManyBody;
-use crate::timestep::{StepPlan, DEFAULT_TIMESTEP};
-use crate::world::{finite_or, RapierSceneWorld, WorldOptions};
+use crate::sanitize::{finite_or, positive_or};
+use crate::timestep::{fixed_timestep, StepPlan, DEFAULT_TIMESTEP};
+use crate::world::{RapierSceneWorld, WorldOptions};
 
 /// How long (simulated seconds) every dynamic body must stay under
 /// [`RapierLayoutConfig::rest_speed`] before [`Layout::is_converged`] says so; the same
@@ -124,10 +124,7 @@ pub struct RapierLayout<N> {
     drives: Vec<Drive>,
     calm_time: f32,
     converged: bool,
-    many_body: ManyBody,
-    link_bias: LinkBias,
-    points: Vec<Point2D<f32>>,
-    forces: Vec<Vector2D<f32>>,
+    forces: Forces<N>,
     recovered: Vec<N>,
     /// This call's fixed timestep; new joints are tuned for it.
     fixed_dt: f32,
@@ -190,10 +187,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             drives: Vec::new(),
             calm_time: 0.0,
             converged: false,
-            many_body: ManyBody::default(),
-            link_bias: LinkBias::default(),
-            points: Vec::new(),
-            forces: Vec::new(),
+            forces: Forces::default(),
             recovered: Vec::new(),
             fixed_dt: DEFAULT_TIMESTEP,
             alpha: 1.0,
@@ -382,7 +376,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         plan.substeps = plan.substeps.saturating_mul(substeps);
         plan.substep_dt /= substeps as f32;
         // New joints are tuned for the longest substep this configuration takes.
-        self.fixed_dt = sanitized_timestep(state.dt) / substeps as f32;
+        self.fixed_dt = fixed_timestep(state.dt) / substeps as f32;
         let reconfigured = self.apply_config_changes();
         let unfolding_before = self.unfolding;
         let mut disturbed = self.sync_topology(scene, extras);
@@ -463,7 +457,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.converged = false;
         self.calm_time = 0.0;
         self.halted = false;
-        self.link_bias = LinkBias::default();
+        self.forces.reset();
     }
 
     /// Config changes that the world's structure depends on drop it (rebuilt this call);
@@ -480,7 +474,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             || applied.collisions != self.config.collisions
             || applied.contact_events != self.config.contact_events
             || applied.default_radius.to_bits() != self.config.default_radius.to_bits();
-        if body_forces_on(applied) && !body_forces_on(&self.config) {
+        if self.forces.any_active(applied) && !self.forces.any_active(&self.config) {
             // Forces stay on bodies until reset: drop the last repulsion and bias.
             if let Some(world) = self.world.as_mut() {
                 world.reset_forces();
@@ -652,7 +646,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let mut world = RapierSceneWorld::with_options(self.world_options());
         world.set_timestep(self.fixed_dt);
         // A new world counts its versions from 0 again.
-        self.link_bias = LinkBias::default();
+        self.forces.reset();
         // Contacts stay out of the first unfolding until the heat lets them in.
         world.set_contacts_enabled(!(self.unfolding || self.rebuilds == 0));
         let mut spread = CoincidenceSpreader::default();
@@ -948,11 +942,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let Some(world) = self.world.as_mut() else {
             return;
         };
-        let length_unit = if config.length_unit.is_finite() && config.length_unit > 0.0 {
-            config.length_unit
-        } else {
-            1.0
-        };
+        let length_unit = positive_or(config.length_unit, 1.0);
         let mut contact_softness = config.contact_softness;
         let heat = match config.cooling {
             Some(cooling) => {
@@ -1014,14 +1004,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                         .set_next_kinematic_translation(Vector::new(target.x, target.y));
                 }
             }
-            if body_forces_on(config) {
-                apply_body_forces(
-                    world,
-                    (&mut self.many_body, &mut self.link_bias),
-                    (&mut self.points, &mut self.forces),
-                    config,
-                    heat,
-                );
+            if self.forces.any_active(config) {
+                self.forces.apply(world, config, heat);
             }
             world.step(gravity);
         }
@@ -1137,73 +1121,6 @@ fn clamp_speed(v: Vector2D<f32>, max_speed: f32) -> Vector2D<f32> {
         v * (max_speed / speed)
     } else {
         v
-    }
-}
-
-/// Whether `config` puts forces on bodies every substep: repulsion or a link bias.
-fn body_forces_on(config: &RapierLayoutConfig) -> bool {
-    config.repulsion.is_some() || finite_or(config.link_bias, 0.0) > 0.0
-}
-
-/// Sets every awake dynamic body's force to its many-body repulsion plus centre pull
-/// plus link bias. Every body (pinned and dragged ones too) pushes; only dynamic bodies
-/// are pushed. Skipped while nothing is awake, so a resting layout stays cheap.
-fn apply_body_forces<N: Clone + Eq + Hash>(
-    world: &mut RapierSceneWorld<N>,
-    (tree, link_bias): (&mut ManyBody, &mut LinkBias),
-    (points, forces): (&mut Vec<Point2D<f32>>, &mut Vec<Vector2D<f32>>),
-    config: &RapierLayoutConfig,
-    heat: f32,
-) {
-    if world.awake_body_count() == 0 {
-        return;
-    }
-    points.clear();
-    points.extend((0..world.slots.len()).map(|s| world.position_at(s)));
-    let pushed = |world: &RapierSceneWorld<N>, s: usize| {
-        let body = world.body_at(s);
-        body.is_dynamic() && !body.is_sleeping()
-    };
-    let mut pull = 0.0;
-    let mut center = Point2D::origin();
-    match &config.repulsion {
-        Some(repulsion) => {
-            tree.build(points);
-            let strength = finite_or(repulsion.strength, 0.0) * heat;
-            let theta = finite_or(repulsion.theta, 0.0).max(0.0);
-            let min_distance = finite_or(repulsion.min_distance, 1.0).max(1e-3);
-            pull = finite_or(repulsion.center_pull, 0.0) * heat;
-            center = repulsion.center;
-            tree.forces(strength, theta, min_distance, |s| pushed(world, s), forces);
-        }
-        None => {
-            forces.clear();
-            forces.resize(points.len(), Vector2D::zero());
-        }
-    }
-    link_bias.add_forces(world, config.link_bias, points, forces);
-    for (s, &point) in points.iter().enumerate() {
-        if !pushed(world, s) {
-            continue;
-        }
-        let mut f = forces[s];
-        if center.x.is_finite() && center.y.is_finite() && pull != 0.0 {
-            f -= (point - center) * pull;
-        }
-        if f.is_finite() {
-            let body = world.body_at_mut(s);
-            body.reset_forces(false);
-            body.add_force(Vector::new(f.x, f.y), false);
-        }
-    }
-}
-
-/// The state's fixed timestep, or 1/60 s when it is unset or unusable.
-fn sanitized_timestep(dt: f32) -> f32 {
-    if dt.is_finite() && dt > 0.0 {
-        dt
-    } else {
-        DEFAULT_TIMESTEP
     }
 }
 

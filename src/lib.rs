@@ -103,12 +103,12 @@ mod adapter;
 mod bindings;
 mod config;
 mod events;
+mod forces;
 mod input;
 mod joints;
 mod layout;
-mod link_bias;
 pub mod quality;
-mod repulsion;
+mod sanitize;
 mod timestep;
 mod world;
 
@@ -125,13 +125,14 @@ pub use config::{
     TopologyUpdate,
 };
 pub use events::SceneEvent;
+pub use forces::barnes_hut::ManyBody;
+pub use forces::many_body::Repulsion;
 pub use input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
 pub use input::scene_file::{SceneFile, SceneFileNode};
 pub use input::topology::topology_hash;
 pub use input::validation::LayoutError;
 pub use joints::max_resolved_stiffness;
 pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeSet};
-pub use repulsion::{ManyBody, Repulsion};
 pub use timestep::{StepPlan, DEFAULT_TIMESTEP, MIN_TIMESTEP};
 pub use world::{
     RapierSceneWorld, WorldOptions, MAX_PENDING_EVENTS, MIN_BODY_MASS, POSITION_EPSILON,

@@ -1,11 +1,19 @@
 //! Frame time to substeps: how one call's `dt` becomes equal rapier steps.
 
+use crate::sanitize::positive_or;
+
 /// The fixed timestep used when the state's is unset (`0.0`) or unusable.
 pub const DEFAULT_TIMESTEP: f32 = 1.0 / 60.0;
 
 /// Shortest substep and frame time used, in seconds: shorter (subnormal) values would
 /// make rapier's `1 / dt` infinite.
 pub const MIN_TIMESTEP: f32 = 1.0e-9;
+
+/// The fixed timestep a state's `dt` stands for: itself when finite and positive, else
+/// [`DEFAULT_TIMESTEP`].
+pub(crate) fn fixed_timestep(dt: f32) -> f32 {
+    positive_or(dt, DEFAULT_TIMESTEP)
+}
 
 /// How one call advances simulated time.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -42,11 +50,7 @@ impl StepPlan {
     /// assert_eq!((idle.substeps, idle.substep_dt), (1, 1.0 / 60.0));
     /// ```
     pub fn new(dt: f32, fixed_dt: f32, max_frame_time: f32, max_substeps: u32) -> Self {
-        let fixed = if fixed_dt.is_finite() && fixed_dt > 0.0 {
-            fixed_dt
-        } else {
-            DEFAULT_TIMESTEP
-        };
+        let fixed = fixed_timestep(fixed_dt);
         if !(dt.is_finite() && dt > 0.0) {
             return Self {
                 substeps: 1,
@@ -54,11 +58,7 @@ impl StepPlan {
                 frame_dt: fixed,
             };
         }
-        let cap = if max_frame_time.is_finite() && max_frame_time > 0.0 {
-            max_frame_time
-        } else {
-            0.25
-        };
+        let cap = positive_or(max_frame_time, 0.25);
         let max_substeps = max_substeps.max(1);
         let time = dt.min(cap).max(MIN_TIMESTEP);
         let dt = dt.max(MIN_TIMESTEP);

@@ -22,6 +22,7 @@ use crate::config::EdgeJoint;
 use crate::events::{CollisionCollector, SceneEvent};
 use crate::joints::{max_resolved_stiffness, rapier_joint, scaled_spring};
 use crate::layout::{DeltaMap, IdHasher};
+use crate::sanitize::finite_or;
 
 /// Displacements shorter than this are left out of [`RapierSceneWorld::read_positions`].
 pub const POSITION_EPSILON: f32 = 1.0e-4;
@@ -896,6 +897,11 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         &mut self.bodies[self.slots[slot].body]
     }
 
+    /// Number of slots (one per body), the length of every per-slot buffer.
+    pub(crate) fn slot_count(&self) -> usize {
+        self.slots.len()
+    }
+
     pub(crate) fn position_at(&self, slot: usize) -> Point2D<f32> {
         to_point(self.body_at(slot).translation())
     }
@@ -1303,14 +1309,6 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
 fn joint_key(a: u64, b: u64) -> (u64, u64) {
     (a.min(b), a.max(b))
-}
-
-pub(crate) fn finite_or(x: f32, fallback: f32) -> f32 {
-    if x.is_finite() {
-        x
-    } else {
-        fallback
-    }
 }
 
 /// A shape with finite, non-negative extents.

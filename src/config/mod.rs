@@ -9,7 +9,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::bindings::PhysicsMaterial;
-use crate::repulsion::Repulsion;
+use crate::forces::many_body::Repulsion;
 
 pub(crate) mod cooling;
 pub(crate) mod edge_joint;

@@ -7,7 +7,7 @@ use crate::config::cooling::Cooling;
 use crate::config::edge_joint::EdgeJoint;
 use crate::config::solver::{Accuracy, ContactSoftness};
 use crate::config::RapierLayoutConfig;
-use crate::repulsion::Repulsion;
+use crate::forces::many_body::Repulsion;
 
 impl RapierLayoutConfig {
     /// A configuration for laying graphs out: d3-force's default forces converted to

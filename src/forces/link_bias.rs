@@ -9,8 +9,13 @@
 //! the same force vector: at `g = 1` end `a` feels `2 d_b / (d_a + d_b) · k x`, d3's
 //! share of twice the spring force.
 
+use std::hash::Hash;
+
 use euclid::default::{Point2D, Vector2D};
 
+use super::{BodyForce, ForceContext};
+use crate::config::RapierLayoutConfig;
+use crate::sanitize::finite_or;
 use crate::world::RapierSceneWorld;
 
 /// One spring, as the bias reads it.
@@ -37,11 +42,26 @@ pub(crate) struct LinkBias {
     degrees: Vec<u32>,
 }
 
+impl<N: Clone + Eq + Hash> BodyForce<N> for LinkBias {
+    fn is_active(&self, config: &RapierLayoutConfig) -> bool {
+        finite_or(config.link_bias, 0.0) > 0.0
+    }
+
+    fn apply(&mut self, frame: &ForceContext<'_, N>, forces: &mut Vec<Vector2D<f32>>) {
+        self.add_forces(frame.world, frame.config.link_bias, frame.points, forces);
+    }
+
+    fn reset(&mut self) {
+        // A new world counts its versions from 0 again.
+        *self = Self::default();
+    }
+}
+
 impl LinkBias {
     /// Adds `gain` (clamped to `[0, 1]`) times the bias of every spring to `forces`,
     /// indexed by slot like `points`, the bodies' positions. Springs are scaled by the
     /// factor the world's joints have now.
-    pub(crate) fn add_forces<N: Clone + Eq + std::hash::Hash>(
+    fn add_forces<N: Clone + Eq + Hash>(
         &mut self,
         world: &RapierSceneWorld<N>,
         gain: f32,
@@ -79,9 +99,9 @@ impl LinkBias {
         }
     }
 
-    fn rebuild<N: Clone + Eq + std::hash::Hash>(&mut self, world: &RapierSceneWorld<N>) {
+    fn rebuild<N: Clone + Eq + Hash>(&mut self, world: &RapierSceneWorld<N>) {
         self.degrees.clear();
-        self.degrees.resize(world.slots.len(), 0);
+        self.degrees.resize(world.slot_count(), 0);
         self.springs.clear();
         for (a, b, rest_length, stiffness, cap) in world.springs() {
             self.degrees[a] += 1;

@@ -48,6 +48,32 @@
 //! - [`RapierLayout::try_step`] rejects bad input with a [`LayoutError`] and changes
 //!   nothing; [`Layout::step`] leaves bad elements out and never panics.
 //!
+//! ## Module map
+//! The crate's modules are private; everything public is re-exported at the root.
+//! One [`Layout::step`] call runs through them in this order:
+//!
+//! | module | owns |
+//! | --- | --- |
+//! | `input/` | the host's scene ([`CanvasSceneInput`]), the scene file format, what counts as bad input ([`LayoutError`]), the topology and its order-free hash |
+//! | `config/` | [`RapierLayoutConfig`] and its parts: edge joints and body kinds, the solver and contacts, the [`Cooling`] schedule, the presets |
+//! | `adapter/` | [`RapierLayout`]: one file per stage of a call, below |
+//! | `forces/` | the forces put on bodies every substep, one per file (many-body repulsion over the Barnes–Hut tree, link bias, centre pull) |
+//! | `world/` | [`RapierSceneWorld`]: bodies, joints, springs scaled at once, sleep and wake, stepping, recovery of quarantined bodies, contact events |
+//! | `timestep.rs`, `layout.rs`, `quality` | frame time to substeps, the [`Layout`] trait, layout quality measures |
+//!
+//! 1. `adapter/substeps.rs` plans the substeps; `adapter/reconfigure.rs` applies a
+//!    changed configuration.
+//! 2. `adapter/matching.rs` matches scene nodes to bodies; when the topology changed,
+//!    `adapter/edits.rs` patches the world (`world/nodes.rs`, `world/edges.rs`).
+//! 3. `adapter/sync_in.rs` and `adapter/drag.rs` put the host's pins, drags, releases
+//!    and edits onto the bodies (`world/bodies.rs`, `world/activity.rs`).
+//! 4. `adapter/heat.rs` reheats a cooling layout after a disturbance and re-tunes its
+//!    springs (`world/spring_scale.rs`).
+//! 5. `adapter/substeps.rs` runs each substep: kinematic drives, `forces/`, one rapier
+//!    step (`world/stepping.rs`, `world/recovery.rs`).
+//! 6. `adapter/sync_out.rs` reads each free node's displacement; `adapter/rest.rs`
+//!    decides whether the layout is at rest and stops a cooled one.
+//!
 //! ## Feature flags
 //! - `parallel`: rapier's multi-threaded solver (rayon).
 //! - `enhanced-determinism`: rapier's cross-platform bit-exact math.
@@ -100,12 +126,9 @@
 #![deny(missing_docs)]
 
 mod adapter;
-mod bindings;
 mod config;
-mod events;
 mod forces;
 mod input;
-mod joints;
 mod layout;
 pub mod quality;
 mod sanitize;
@@ -116,24 +139,24 @@ pub use euclid;
 pub use rapier2d;
 
 pub use adapter::{RapierLayout, RapierLayoutState, REST_TIME};
-pub use bindings::{
-    ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot, PhysicsMaterial, SceneBodyKind,
-};
 pub use config::cooling::Cooling;
 pub use config::{
     Accuracy, BodyKindPolicy, ContactSoftness, EdgeJoint, RapierLayoutConfig, SolverSettings,
     TopologyUpdate,
 };
-pub use events::SceneEvent;
 pub use forces::barnes_hut::ManyBody;
 pub use forces::many_body::Repulsion;
 pub use input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
 pub use input::scene_file::{SceneFile, SceneFileNode};
 pub use input::topology::topology_hash;
 pub use input::validation::LayoutError;
-pub use joints::max_resolved_stiffness;
 pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeSet};
 pub use timestep::{StepPlan, DEFAULT_TIMESTEP, MIN_TIMESTEP};
+pub use world::bindings::{
+    ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot, PhysicsMaterial, SceneBodyKind,
+};
+pub use world::events::SceneEvent;
+pub use world::rapier_joint::max_resolved_stiffness;
 pub use world::{
     RapierSceneWorld, WorldOptions, MAX_PENDING_EVENTS, MIN_BODY_MASS, POSITION_EPSILON,
 };

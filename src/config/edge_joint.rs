@@ -4,7 +4,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::bindings::EdgeJointSpec;
+use crate::world::bindings::EdgeJointSpec;
 
 /// What each edge becomes in the physics world.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

@@ -8,8 +8,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::bindings::PhysicsMaterial;
 use crate::forces::many_body::Repulsion;
+use crate::world::bindings::PhysicsMaterial;
 
 pub(crate) mod cooling;
 pub(crate) mod edge_joint;

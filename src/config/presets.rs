@@ -2,12 +2,12 @@
 //! [`RapierLayoutConfig::force_directed_fast`], d3-force's default simulation in
 //! physical units. The plain [`RapierLayoutConfig::default`] lives with the fields.
 
-use crate::bindings::PhysicsMaterial;
 use crate::config::cooling::Cooling;
 use crate::config::edge_joint::EdgeJoint;
 use crate::config::solver::{Accuracy, ContactSoftness};
 use crate::config::RapierLayoutConfig;
 use crate::forces::many_body::Repulsion;
+use crate::world::bindings::PhysicsMaterial;
 
 impl RapierLayoutConfig {
     /// A configuration for laying graphs out: d3-force's default forces converted to

@@ -1,0 +1,84 @@
+//! Drags and the hand-off that throws: a dragged node's pointer velocity measured against
+//! the frame's real elapsed time, the velocity a release hands to the body, and the
+//! drives that move kinematic bodies (dragged, or pinned and moved by the host) to the
+//! host's position over a call's substeps.
+
+use std::hash::Hash;
+
+use euclid::default::{Point2D, Vector2D};
+use rapier2d::prelude::Vector;
+
+use crate::world::slot::HostSync;
+use crate::world::RapierSceneWorld;
+
+/// A kinematic body moving to the host's position over this call's substeps.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Drive {
+    pub(super) slot: u32,
+    pub(super) from: Point2D<f32>,
+    pub(super) to: Point2D<f32>,
+}
+
+/// Sets each driven body's next position for substep `k` of `substeps`: evenly along its
+/// path, exactly at the host's position on the last substep.
+pub(super) fn drive_kinematic_bodies<N: Clone + Eq + Hash>(
+    world: &mut RapierSceneWorld<N>,
+    drives: &[Drive],
+    k: u32,
+    substeps: u32,
+) {
+    if drives.is_empty() {
+        return;
+    }
+    let t = (k + 1) as f32 / substeps as f32;
+    for drive in drives {
+        let between = drive.from.lerp(drive.to, t);
+        let target = if k + 1 == substeps || !between.is_finite() {
+            drive.to
+        } else {
+            between
+        };
+        world
+            .body_at_mut(drive.slot as usize)
+            .set_next_kinematic_translation(Vector::new(target.x, target.y));
+    }
+}
+
+/// Records this call's host position of a dragged node and the pointer's velocity
+/// since the last call (`frame_dt` seconds ago), capped at `max_speed`: what its
+/// release will throw it with. The first frame of a drag has no velocity yet.
+pub(super) fn track_drag(
+    host: &mut HostSync,
+    position: Point2D<f32>,
+    was_dragging: bool,
+    frame_dt: f32,
+    max_speed: f32,
+) {
+    let velocity = (position - host.drag_position) / frame_dt;
+    host.drag_velocity = if was_dragging && velocity.is_finite() {
+        clamp_speed(velocity, max_speed)
+    } else {
+        Vector2D::zero()
+    };
+    host.drag_position = position;
+}
+
+/// The velocity a body takes when it turns dynamic: the drag's when a drag ended (a
+/// throw, also of a node unpinned in the same call), none after an unpin or an unfreeze.
+pub(super) fn release_velocity(host: &HostSync, was_dragging: bool) -> Vector2D<f32> {
+    if was_dragging {
+        host.drag_velocity
+    } else {
+        Vector2D::zero()
+    }
+}
+
+/// `v` shortened to `max_speed` (no cap when `max_speed` is not positive).
+fn clamp_speed(v: Vector2D<f32>, max_speed: f32) -> Vector2D<f32> {
+    let speed = v.length();
+    if max_speed > 0.0 && speed > max_speed && speed.is_finite() {
+        v * (max_speed / speed)
+    } else {
+        v
+    }
+}

@@ -1,0 +1,252 @@
+//! Topology edits: when the scene's nodes, edges or pins differ from the world's, the
+//! world is patched in place (untouched bodies keep their motion) or, by configuration
+//! or on the first call, built from scratch. Nodes are inserted in scene order and
+//! joints in edge order, so the same session builds the same world.
+
+use std::collections::{HashMap, HashSet};
+use std::hash::Hash;
+
+use euclid::default::{Point2D, Vector2D};
+
+use super::RapierLayout;
+use crate::config::{EdgeJoint, RapierLayoutConfig, TopologyUpdate};
+use crate::input::scene::{CanvasNode, CanvasSceneInput};
+use crate::input::topology::Topology;
+use crate::input::validation::node_is_valid;
+use crate::layout::{IdHasher, LayoutExtras};
+use crate::world::bindings::{ColliderSpec, NodeAvatarBinding, SceneBodyKind};
+use crate::world::rapier_joint::scaled_spring;
+use crate::world::RapierSceneWorld;
+
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    /// Brings the world's topology to the scene's. Returns whether the world's structure
+    /// changed (a disturbance).
+    pub(super) fn sync_topology(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+    ) -> bool {
+        let Some(topology) = self.candidate_topology(scene, extras) else {
+            return false;
+        };
+        self.matching.remember_edges(scene);
+        if self.world.is_some() && topology.hash == self.topology_hash {
+            return false;
+        }
+        if self.world.is_none() || self.config.topology_update == TopologyUpdate::Rebuild {
+            self.build_world(scene, &topology);
+        } else {
+            self.patch_world(scene, &topology);
+        }
+        self.topology_hash = topology.hash;
+        if let Some(world) = self.world.as_mut() {
+            world.set_topology_hash(topology.hash);
+        }
+        // The slots moved: match again.
+        self.match_nodes(scene, extras);
+        true
+    }
+
+    /// A new world for `topology`. Nodes whose values are unusable this call keep their
+    /// old body's position, and drags in progress survive, so a release still throws.
+    fn build_world(&mut self, scene: &CanvasSceneInput<N>, topology: &Topology) {
+        let mut world = RapierSceneWorld::with_options(self.world_options());
+        world.set_timestep(self.joint_dt);
+        // A new world counts its versions from 0 again.
+        self.forces.reset();
+        // Contacts stay out of the first unfolding until the heat lets them in.
+        world.set_contacts_enabled(!(self.heat.unfolding || self.rebuilds == 0));
+        insert_missing_nodes(
+            &mut world,
+            scene,
+            topology,
+            &self.config,
+            self.world.as_ref(),
+        );
+        let degrees = topology.degrees(scene.nodes.len());
+        insert_joints(&mut world, scene, topology, &degrees, &self.config);
+        self.world = Some(world);
+        self.applied = Some(self.config.clone());
+        if self.rebuilds == 0 {
+            // Later builds are disturbances: they reheat.
+            self.heat.alpha = 1.0;
+            self.heat.unfolding = true;
+        }
+        self.rebuilds += 1;
+    }
+
+    /// Inserts and removes only what changed; untouched bodies keep their motion.
+    fn patch_world(&mut self, scene: &CanvasSceneInput<N>, topology: &Topology) {
+        let config = &self.config;
+        let Some(world) = self.world.as_mut() else {
+            return;
+        };
+        // Removals, in the world's own (deterministic) slot order.
+        let mut keep: HashSet<&N, IdHasher> =
+            HashSet::with_capacity_and_hasher(topology.nodes.len(), IdHasher::default());
+        keep.extend(topology.nodes.iter().map(|&i| &scene.nodes[i].id));
+        let gone: Vec<N> = world
+            .node_ids()
+            .filter(|id| !keep.contains(id))
+            .cloned()
+            .collect();
+        for id in &gone {
+            world.remove_node(id);
+        }
+        world.set_timestep(self.joint_dt);
+        insert_missing_nodes(world, scene, topology, config, None);
+        // Joints: drop those whose edge went away, add the new ones.
+        let index_of: HashMap<&N, usize, IdHasher> = topology
+            .nodes
+            .iter()
+            .map(|&i| (&scene.nodes[i].id, i))
+            .collect();
+        let wanted: HashSet<(usize, usize), IdHasher> = topology
+            .edges
+            .iter()
+            .map(|&(a, b)| (a.min(b), a.max(b)))
+            .collect();
+        world.retain_edge_joints(|a, b| match (index_of.get(a), index_of.get(b)) {
+            (Some(&x), Some(&y)) => wanted.contains(&(x.min(y), x.max(y))),
+            _ => false,
+        });
+        let degrees = topology.degrees(scene.nodes.len());
+        insert_joints(world, scene, topology, &degrees, config);
+        if degree_exponent(config).is_some() {
+            // Springs whose ends changed degree take their new share.
+            world.retune_edge_joints(|a, b| match (index_of.get(a), index_of.get(b)) {
+                (Some(&x), Some(&y)) => edge_joint_for(config, degrees[x], degrees[y]),
+                _ => config.edge_joint,
+            });
+        }
+        self.patches += 1;
+    }
+}
+
+/// Inserts a body for every node of `topology` that `world` lacks, in scene order, at
+/// the host's position (coincident ones spread apart) and anchored there; a node whose
+/// values are unusable takes its position, and its drag, from the `old` world (and is
+/// left out without one).
+fn insert_missing_nodes<N: Clone + Eq + Hash>(
+    world: &mut RapierSceneWorld<N>,
+    scene: &CanvasSceneInput<N>,
+    topology: &Topology,
+    config: &RapierLayoutConfig,
+    old: Option<&RapierSceneWorld<N>>,
+) {
+    let mut spread = CoincidenceSpreader::default();
+    for &i in &topology.nodes {
+        let node = &scene.nodes[i];
+        if world.contains_node(&node.id) {
+            continue;
+        }
+        let position = if node_is_valid(node) {
+            node.position
+        } else {
+            match old.and_then(|w| w.get_position(&node.id)) {
+                Some(p) => p,
+                None => continue,
+            }
+        };
+        world.insert_node(&binding_for(config, node), spread.place(position));
+        world.rebase_initial_position(&node.id, position);
+        let before = old.and_then(|w| Some(*w.host_at(w.slot_of(&node.id)?)));
+        if let (Some(before), Some(s)) = (before, world.slot_of(&node.id)) {
+            // A drag in progress survives the rebuild, so its release still throws.
+            let host = world.host_at_mut(s);
+            host.dragging = before.dragging;
+            host.drag_position = before.drag_position;
+            host.drag_velocity = before.drag_velocity;
+        }
+    }
+}
+
+/// Inserts the joint of every edge of `topology` (pairs that have one are skipped).
+fn insert_joints<N: Clone + Eq + Hash>(
+    world: &mut RapierSceneWorld<N>,
+    scene: &CanvasSceneInput<N>,
+    topology: &Topology,
+    degrees: &[u32],
+    config: &RapierLayoutConfig,
+) {
+    for &(a, b) in &topology.edges {
+        world.insert_edge_joint(
+            &scene.nodes[a].id,
+            &scene.nodes[b].id,
+            &edge_joint_for(config, degrees[a], degrees[b]),
+        );
+    }
+}
+
+/// The node's radius, or the configured default for 0 (an unusable default counts
+/// as 16), as the world stores it: finite and non-negative.
+pub(super) fn radius_of<N>(config: &RapierLayoutConfig, node: &CanvasNode<N>) -> f32 {
+    if node.radius > 0.0 && node.radius.is_finite() {
+        node.radius
+    } else {
+        let default = config.default_radius;
+        if default.is_finite() && default >= 0.0 {
+            default
+        } else {
+            16.0
+        }
+    }
+}
+
+/// How the node's body is built: a dynamic disk of the configured material.
+fn binding_for<N: Clone>(
+    config: &RapierLayoutConfig,
+    node: &CanvasNode<N>,
+) -> NodeAvatarBinding<N> {
+    NodeAvatarBinding {
+        node_id: node.id.clone(),
+        collider: ColliderSpec::Circle {
+            radius: radius_of(config, node),
+        },
+        material: config.material,
+        body_kind: SceneBodyKind::Dynamic,
+    }
+}
+
+/// The joint `config` gives an edge whose ends have `da` and `db` distinct neighbours:
+/// [`RapierLayoutConfig::edge_joint`], with a spring's stiffness and damping divided by
+/// `min(da, db)^exponent` ([`RapierLayoutConfig::spring_degree_exponent`]; unusable
+/// exponents count as 0).
+fn edge_joint_for(config: &RapierLayoutConfig, da: u32, db: u32) -> EdgeJoint {
+    match degree_exponent(config) {
+        Some(exponent) => {
+            let share = (da.min(db).max(1) as f32).powf(exponent);
+            scaled_spring(&config.edge_joint, |x| x / share)
+        }
+        None => config.edge_joint,
+    }
+}
+
+/// [`RapierLayoutConfig::spring_degree_exponent`] when it scales anything: finite and
+/// not zero.
+fn degree_exponent(config: &RapierLayoutConfig) -> Option<f32> {
+    let exponent = config.spring_degree_exponent;
+    (exponent.is_finite() && exponent.abs() > 0.0).then_some(exponent)
+}
+
+/// Spreads nodes inserted at exactly the same position along a golden-angle spiral
+/// (k-th repeat at `√k` units), so contacts get distinct normals and push the nodes
+/// apart radially instead of along one arbitrary axis.
+#[derive(Default)]
+struct CoincidenceSpreader {
+    seen: HashMap<(u32, u32), u32, IdHasher>,
+}
+
+impl CoincidenceSpreader {
+    fn place(&mut self, p: Point2D<f32>) -> Point2D<f32> {
+        let count = self.seen.entry((p.x.to_bits(), p.y.to_bits())).or_insert(0);
+        let k = *count;
+        *count += 1;
+        if k == 0 {
+            return p;
+        }
+        let angle = k as f32 * 2.399_963; // the golden angle, radians
+        let r = (k as f32).sqrt();
+        p + Vector2D::new(angle.cos(), angle.sin()) * r
+    }
+}

@@ -1,0 +1,165 @@
+//! The heat of a cooling layout ([`RapierLayoutConfig::cooling`]): a disturbance
+//! reheats it, simulated time cools it, and while it is hot its springs are re-tuned and
+//! (on the first unfolding) its contacts softened or left out. The cold stop at the end
+//! of the schedule is in `rest.rs`; the schedule itself is
+//! [`Cooling`](crate::Cooling).
+
+use std::hash::Hash;
+
+use super::RapierLayout;
+use crate::config::solver::ContactSoftness;
+
+#[cfg(doc)]
+use crate::RapierLayoutConfig;
+
+/// How far the springs' scale may drift from the heat's before every spring is re-tuned
+/// (a fraction of the scale): each re-tune touches every joint, so the scale follows the
+/// heat in steps, about 140 over a full schedule, and exactly at the floor.
+const RETUNE_STEP: f32 = 0.05;
+
+/// A cooling layout's heat and where it is in its schedule.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Heat {
+    /// The heat, in `(0, 1]`: what forces are multiplied by.
+    pub(crate) alpha: f32,
+    /// Simulated time the heat has spent at its floor since the last reheat.
+    pub(crate) cold_time: f32,
+    /// Set by the cold stop: the world is not stepped until a disturbance, as d3-force
+    /// stops its timer.
+    pub(crate) halted: bool,
+    /// The first unfolding: from the first build until the heat first reaches its floor
+    /// (or the layout rests), when [`Cooling::first_contact_heat`](crate::Cooling) and
+    /// [`Cooling::hot_contact_frequency`](crate::Cooling) apply.
+    pub(crate) unfolding: bool,
+}
+
+impl Default for Heat {
+    fn default() -> Self {
+        Self {
+            alpha: 1.0,
+            cold_time: 0.0,
+            halted: false,
+            unfolding: false,
+        }
+    }
+}
+
+/// What the heat makes of one call's simulation.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct FrameHeat {
+    /// The factor on the body forces (1 without a schedule).
+    pub(super) scale: f32,
+    /// The contacts of this call.
+    pub(super) contact_softness: ContactSoftness,
+}
+
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    /// Before the simulation: a disturbance during the first unfolding ends it, any
+    /// disturbance lifts the cold stop and reheats a cooling layout. Returns whether the
+    /// world is to be stepped (false while halted).
+    pub(super) fn start_frame(&mut self, disturbed: bool, unfolding_before: bool) -> bool {
+        if disturbed && unfolding_before {
+            // An interaction during the first unfolding: contacts in, and firm.
+            self.end_unfolding();
+        }
+        if disturbed || self.config.cooling.is_none() {
+            self.heat.halted = false;
+        }
+        if self.heat.halted {
+            return false;
+        }
+        if let Some(cooling) = self.config.cooling {
+            if disturbed {
+                self.heat.alpha = cooling.reheated(self.heat.alpha);
+                // Also when the reheat cannot lift the heat off its floor: a disturbed
+                // layout gets half a second before it is stopped again.
+                self.heat.cold_time = 0.0;
+            }
+        }
+        true
+    }
+
+    /// The heat's effect on this call, applied to the world: springs re-tuned to the
+    /// heat (in steps of 5 %, each re-tune touching every joint; a graph far from its
+    /// rest lengths lets them fade toward the heat itself, blended by its median stretch),
+    /// and during the first unfolding contacts softened by the heat and let in once it
+    /// has fallen to [`Cooling::first_contact_heat`](crate::Cooling::first_contact_heat).
+    pub(super) fn heat_world(&mut self) -> FrameHeat {
+        let config = &self.config;
+        let heat = self.heat;
+        let mut contact_softness = config.contact_softness;
+        let Some(world) = self.world.as_mut() else {
+            return FrameHeat {
+                scale: 1.0,
+                contact_softness,
+            };
+        };
+        let scale = match config.cooling {
+            Some(cooling) => {
+                let target = cooling.spring_scale(heat.alpha);
+                let scale = world.spring_scale();
+                let at_floor = heat.alpha <= cooling.floor();
+                if (target - scale).abs() > RETUNE_STEP * scale || at_floor {
+                    let limit = cooling.stretch_limit.unwrap_or(f32::INFINITY);
+                    // A no-op when already there.
+                    world.set_spring_scale_by_stretch(target, heat.alpha, limit);
+                }
+                if heat.unfolding {
+                    let cold = contact_softness.coefficients().natural_frequency;
+                    contact_softness.natural_frequency =
+                        cooling.contact_frequency(cold, heat.alpha);
+                }
+                heat.alpha
+            }
+            None => 1.0,
+        };
+        if heat.unfolding && !world.contacts_enabled() {
+            // Never below the floor, which the heat would not reach.
+            let gate = config.cooling.and_then(|cooling| {
+                let gate = cooling.first_contact_heat.filter(|gate| gate.is_finite())?;
+                Some(gate.max(cooling.floor()))
+            });
+            if gate.is_none_or(|gate| scale <= gate) {
+                world.set_contacts_enabled(true);
+            }
+        }
+        FrameHeat {
+            scale,
+            contact_softness,
+        }
+    }
+
+    /// After the simulation: the heat falls by the simulated time, the cold stop may
+    /// halt the world, and the first unfolding ends at the floor (at once without a
+    /// schedule).
+    pub(super) fn cool(&mut self, simulated: f32) {
+        match self.config.cooling {
+            Some(cooling) => {
+                self.heat.alpha = cooling.cooled(self.heat.alpha, simulated);
+                self.stop_when_cold(cooling.floor(), simulated);
+                if self.heat.alpha <= cooling.floor() {
+                    self.end_unfolding();
+                }
+            }
+            None => {
+                self.end_unfolding();
+            }
+        }
+    }
+
+    /// Ends the first unfolding: contacts in (if they were left out) and firm from here
+    /// on, so interactions always push. Returns whether contacts were let in.
+    pub(super) fn end_unfolding(&mut self) -> bool {
+        if !self.heat.unfolding {
+            return false;
+        }
+        self.heat.unfolding = false;
+        match self.world.as_mut() {
+            Some(world) if !world.contacts_enabled() => {
+                world.set_contacts_enabled(true);
+                true
+            }
+            _ => false,
+        }
+    }
+}

@@ -1,0 +1,166 @@
+//! Matching: which body each scene node is this call, and the cheap checks that tell
+//! whether the scene's topology can differ from the world's before any hash is computed.
+
+use std::hash::Hash;
+
+use super::RapierLayout;
+use crate::input::scene::CanvasSceneInput;
+use crate::input::topology::Topology;
+use crate::input::validation::node_is_valid;
+use crate::layout::LayoutExtras;
+use crate::world::RapierSceneWorld;
+
+/// A scene node without a body this call (none yet, or a repeated id).
+pub(super) const NO_SLOT: u32 = u32::MAX;
+
+/// Where a scene node stands this call.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct NodeMatch {
+    /// Its body's slot, or [`NO_SLOT`].
+    pub(super) slot: u32,
+    /// Whether its values are usable this call.
+    pub(super) valid: bool,
+    pub(super) pinned: bool,
+}
+
+/// The matches of the scene's nodes to bodies, by scene index, and what is kept to make
+/// the next call's matching cheap.
+#[derive(Debug)]
+pub(super) struct Matching<N> {
+    /// Incremented per matching pass; marks which bodies the scene named.
+    stamp: u64,
+    matches: Vec<NodeMatch>,
+    /// Last pass's matches, kept to reuse slots and the buffer.
+    previous: Vec<NodeMatch>,
+    /// The edges of the scene the topology was last computed from, to skip that work
+    /// while the host passes the same edges.
+    edges: Vec<(N, N)>,
+}
+
+impl<N> Default for Matching<N> {
+    fn default() -> Self {
+        Self {
+            stamp: 0,
+            matches: Vec::new(),
+            previous: Vec::new(),
+            edges: Vec::new(),
+        }
+    }
+}
+
+impl<N: Clone + Eq + Hash> Matching<N> {
+    /// This call's matches, by scene index.
+    pub(super) fn matches(&self) -> &[NodeMatch] {
+        &self.matches
+    }
+
+    /// Matches scene nodes to bodies and returns whether anything told apart the
+    /// scene's node set or pins from the world's.
+    fn match_nodes(
+        &mut self,
+        world: Option<&mut RapierSceneWorld<N>>,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+    ) -> bool {
+        self.stamp += 1;
+        let stamp = self.stamp;
+        let Some(world) = world else {
+            self.matches.clear();
+            return true;
+        };
+        let check_pins = !extras.pinned.is_empty();
+        let mut changed = false;
+        let mut seen = 0;
+        std::mem::swap(&mut self.matches, &mut self.previous);
+        self.matches.clear();
+        for (i, node) in scene.nodes.iter().enumerate() {
+            let valid = node_is_valid(node);
+            let pinned = check_pins && extras.pinned.contains(&node.id);
+            // The host usually passes its nodes in the same order: the slot found for
+            // this index last call is checked with one id comparison instead of a hash
+            // lookup.
+            let cached = self
+                .previous
+                .get(i)
+                .map(|m| m.slot as usize)
+                .filter(|&s| s < world.slot_count() && *world.id_at(s) == node.id);
+            let slot = match cached.or_else(|| world.slot_of(&node.id)) {
+                Some(s) if world.host_at(s).stamp != stamp => {
+                    let host = world.host_at_mut(s);
+                    host.stamp = stamp;
+                    seen += 1;
+                    changed |= host.pinned != pinned;
+                    s as u32
+                }
+                Some(_) => NO_SLOT, // a repeated id
+                None => {
+                    // A usable node without a body is new (or a repeat of a new id).
+                    changed |= valid;
+                    NO_SLOT
+                }
+            };
+            self.matches.push(NodeMatch {
+                slot,
+                valid,
+                pinned,
+            });
+        }
+        changed || seen != world.slot_count()
+    }
+
+    /// Whether the scene passes the same edges, in the same order, as when the topology
+    /// was last computed.
+    fn edges_unchanged(&self, scene: &CanvasSceneInput<N>) -> bool {
+        self.edges.len() == scene.edges.len()
+            && self
+                .edges
+                .iter()
+                .zip(&scene.edges)
+                .all(|((s, t), e)| *s == e.source && *t == e.target)
+    }
+
+    /// Remembers the scene's edges as the ones the topology was computed from.
+    pub(super) fn remember_edges(&mut self, scene: &CanvasSceneInput<N>) {
+        self.edges.clear();
+        self.edges.extend(
+            scene
+                .edges
+                .iter()
+                .map(|e| (e.source.clone(), e.target.clone())),
+        );
+    }
+
+    /// Forgets the remembered edges, so the next call computes the topology again.
+    pub(super) fn forget_edges(&mut self) {
+        self.edges.clear();
+    }
+}
+
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    /// Matches scene nodes to bodies (this call's matches).
+    pub(super) fn match_nodes(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+    ) -> bool {
+        self.matching
+            .match_nodes(self.world.as_mut(), scene, extras)
+    }
+
+    /// Matches scene nodes to bodies and returns the scene's topology when it may differ
+    /// from the world's; `None` when the cheap checks show it cannot.
+    pub(super) fn candidate_topology(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+    ) -> Option<Topology> {
+        let nodes_changed = self.match_nodes(scene, extras);
+        if !nodes_changed && self.topology_hash != 0 && self.matching.edges_unchanged(scene) {
+            return None;
+        }
+        let world = self.world.as_ref();
+        Some(Topology::of(scene, extras, |id| {
+            world.is_some_and(|w| w.contains_node(id))
+        }))
+    }
+}

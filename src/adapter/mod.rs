@@ -1,0 +1,347 @@
+//! The adapter: [`RapierLayout`], which keeps one [`RapierSceneWorld`] alive across
+//! frames and syncs the host's scene into it and the motion out of it.
+//!
+//! One call runs through these stages, each in a file of its own:
+//! 1. **Plan** (`substeps.rs`): the frame time becomes equal substeps.
+//! 2. **Reconfigure** (`reconfigure.rs`): a changed configuration drops the world or
+//!    replaces its joints.
+//! 3. **Match and edit** (`matching.rs`, `edits.rs`): scene nodes are matched to bodies;
+//!    when nodes, edges or pins changed, the world is patched (or rebuilt).
+//! 4. **Sync in** (`sync_in.rs`, `drag.rs`): body kinds follow pins, drags and unusable
+//!    input, flipped in place; pinned and dragged bodies are driven to the host's
+//!    positions; a release throws the node with the pointer's speed; free bodies the
+//!    host moved are put where the host put them.
+//! 5. **Heat** (`heat.rs`): a disturbance reheats a cooling layout; a halted one stays
+//!    halted until disturbed.
+//! 6. **Simulate** (`substeps.rs`): per substep, kinematic drives, the body forces of
+//!    `forces/`, one rapier step.
+//! 7. **Sync out** (`sync_out.rs`): each free node's displacement during this call.
+//! 8. **Rest** (`rest.rs`): the cold stop and the convergence signal.
+
+use std::hash::Hash;
+
+use euclid::default::Vector2D;
+
+use crate::config::RapierLayoutConfig;
+use crate::forces::Forces;
+use crate::input::scene::{CanvasSceneInput, CanvasViewport};
+use crate::input::validation::{validate, LayoutError};
+use crate::layout::{DeltaMap, Layout, LayoutExtras};
+use crate::sanitize::finite_or;
+use crate::timestep::DEFAULT_TIMESTEP;
+use crate::world::events::SceneEvent;
+use crate::world::RapierSceneWorld;
+
+mod drag;
+mod edits;
+mod heat;
+mod matching;
+mod reconfigure;
+mod rest;
+mod state;
+mod substeps;
+mod sync_in;
+mod sync_out;
+
+use drag::Drive;
+use heat::Heat;
+use matching::Matching;
+use rest::Rest;
+pub use rest::REST_TIME;
+pub use state::RapierLayoutState;
+
+/// A graph layout on a persistent Rapier2D world.
+///
+/// Nodes are disks (rotations locked), edges are joints ([`EdgeJoint`](crate::EdgeJoint)),
+/// and the world lives from call to call, so momentum carries across frames: a thrown
+/// node keeps flying, a pinned node holds, and a topology edit patches the world without
+/// stopping everybody else.
+///
+/// # Example
+/// ```
+/// use graph_canvas_layout::{
+///     euclid::default::Point2D, CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport,
+///     Layout, LayoutExtras, RapierLayout, RapierLayoutState,
+/// };
+/// let mut scene = CanvasSceneInput::new(
+///     vec![CanvasNode::new(1_u32, Point2D::new(0.0, 0.0)), CanvasNode::new(2, Point2D::new(300.0, 0.0))],
+///     vec![CanvasEdge::new(1, 2)],
+/// );
+/// let mut layout = RapierLayout::default();
+/// let mut state = RapierLayoutState::default();
+/// for _ in 0..120 {
+///     let deltas = layout.step(&scene, &mut state, 1.0 / 60.0, &CanvasViewport::default(), &LayoutExtras::default());
+///     for node in &mut scene.nodes {
+///         if let Some(d) = deltas.get(&node.id) {
+///             node.position += *d;
+///         }
+///     }
+/// }
+/// let gap = scene.nodes[1].position.x - scene.nodes[0].position.x;
+/// assert!(gap < 300.0, "the spring (rest 100) pulled the pair together: gap {gap}");
+/// ```
+pub struct RapierLayout<N> {
+    /// The configuration; changes take effect on the next call (material, shape and
+    /// collision changes rebuild the world, joint changes replace the joints).
+    pub config: RapierLayoutConfig,
+    world: Option<RapierSceneWorld<N>>,
+    /// The configuration the world was built with.
+    applied: Option<RapierLayoutConfig>,
+    topology_hash: u64,
+    rebuilds: u64,
+    patches: u64,
+    /// Scene nodes matched to bodies this call.
+    matching: Matching<N>,
+    /// Kinematic bodies moving to the host's positions over this call's substeps.
+    drives: Vec<Drive>,
+    heat: Heat,
+    rest: Rest,
+    forces: Forces<N>,
+    recovered: Vec<N>,
+    /// The timestep new and re-tuned joints are tuned for: this call's fixed timestep.
+    joint_dt: f32,
+    /// The gravity of the last call: a change is a disturbance.
+    gravity: Vector2D<f32>,
+}
+
+impl<N> std::fmt::Debug for RapierLayout<N> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("RapierLayout")
+            .field("config", &self.config)
+            .field("world", &self.world)
+            .field("topology_hash", &self.topology_hash)
+            .field("rebuilds", &self.rebuilds)
+            .field("patches", &self.patches)
+            .field("converged", &self.rest.converged)
+            .finish_non_exhaustive()
+    }
+}
+
+impl<N: Clone + Eq + Hash> Default for RapierLayout<N> {
+    fn default() -> Self {
+        Self::new(RapierLayoutConfig::default())
+    }
+}
+
+// ── public API ────────────────────────────────────────────────────────────────────────
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    /// A layout with `config` and no world yet (it is built on the first non-empty step).
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{RapierLayout, RapierLayoutConfig};
+    /// let layout = RapierLayout::<u32>::new(RapierLayoutConfig { default_radius: 10.0, ..Default::default() });
+    /// assert!(!layout.has_world());
+    /// ```
+    pub fn new(config: RapierLayoutConfig) -> Self {
+        Self {
+            config,
+            world: None,
+            applied: None,
+            topology_hash: 0,
+            rebuilds: 0,
+            patches: 0,
+            matching: Matching::default(),
+            drives: Vec::new(),
+            heat: Heat::default(),
+            rest: Rest::default(),
+            forces: Forces::default(),
+            recovered: Vec::new(),
+            joint_dt: DEFAULT_TIMESTEP,
+            gravity: Vector2D::zero(),
+        }
+    }
+
+    /// Whether a persistent world exists.
+    pub fn has_world(&self) -> bool {
+        self.world.is_some()
+    }
+
+    /// The hash of the topology (node ids, undirected edges, pins) the world models; 0
+    /// before the first build and after an empty scene. Independent of input order.
+    pub fn current_topology_hash(&self) -> u64 {
+        self.topology_hash
+    }
+
+    /// The persistent world, if any.
+    pub fn world(&self) -> Option<&RapierSceneWorld<N>> {
+        self.world.as_ref()
+    }
+
+    /// How many times a world was built from scratch.
+    pub fn rebuild_count(&self) -> u64 {
+        self.rebuilds
+    }
+
+    /// How many topology changes were applied to the existing world in place.
+    pub fn patch_count(&self) -> u64 {
+        self.patches
+    }
+
+    /// Whether `scene` and `extras` differ in topology (node set, edge set, pins) from
+    /// what the world models: the check every `step` starts with. While the host passes
+    /// the same nodes and edges in the same order it costs one id lookup per node and
+    /// one comparison per edge; otherwise it computes the order-free hash (O(n + e)).
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasNode, CanvasSceneInput, Layout,
+    ///     LayoutExtras, RapierLayout, RapierLayoutState};
+    /// let mut scene = CanvasSceneInput::new(vec![CanvasNode::new(1_u32, Point2D::origin())], vec![]);
+    /// let mut layout = RapierLayout::default();
+    /// let extras = LayoutExtras::default();
+    /// layout.step(&scene, &mut RapierLayoutState::default(), 0.016, &Default::default(), &extras);
+    /// assert!(!layout.topology_changed(&scene, &extras));
+    /// scene.nodes.push(CanvasNode::new(2, Point2D::new(50.0, 0.0)));
+    /// assert!(layout.topology_changed(&scene, &extras));
+    /// ```
+    pub fn topology_changed(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+    ) -> bool {
+        self.candidate_topology(scene, extras)
+            .is_some_and(|topology| topology.hash != self.topology_hash)
+    }
+
+    /// The layout's heat under [`RapierLayoutConfig::cooling`] after the last call: 1
+    /// at the first build, at least [`Cooling::reheat`](crate::Cooling::reheat) after a
+    /// disturbance, falling to [`Cooling::min_alpha`](crate::Cooling::min_alpha)
+    /// over [`Cooling::duration`](crate::Cooling::duration). `None` without a schedule.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasNode, CanvasSceneInput, Layout,
+    ///     LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState};
+    /// let scene = CanvasSceneInput::new(vec![CanvasNode::new(1_u32, Point2D::origin())], vec![]);
+    /// let mut layout = RapierLayout::new(RapierLayoutConfig::force_directed());
+    /// let mut state = RapierLayoutState::default();
+    /// for _ in 0..60 {
+    ///     layout.step(&scene, &mut state, 1.0 / 60.0, &Default::default(), &LayoutExtras::default());
+    /// }
+    /// let alpha = layout.heat().unwrap();
+    /// assert!(alpha < 0.5 && alpha > 0.1, "one second of an 8 s schedule: {alpha}");
+    /// ```
+    pub fn heat(&self) -> Option<f32> {
+        self.config.cooling.map(|_| self.heat.alpha)
+    }
+
+    /// Nodes whose bodies went non-finite during the last call (rapier quarantined
+    /// them) and were put back, at rest, where they last were valid.
+    pub fn recovered_nodes(&self) -> &[N] {
+        &self.recovered
+    }
+
+    /// Drains the contact events recorded since the last call (empty unless
+    /// [`RapierLayoutConfig::contact_events`] is on).
+    pub fn drain_events(&mut self) -> Vec<SceneEvent<N>> {
+        self.world
+            .as_mut()
+            .map(RapierSceneWorld::read_events)
+            .unwrap_or_default()
+    }
+
+    /// `step` with validation: bad input is rejected with an error that names the node
+    /// or edge, and the call changes nothing.
+    ///
+    /// # Errors
+    /// [`LayoutError`] for a non-finite position, a NaN, infinite or negative radius, a
+    /// repeated node id, or an edge naming a node that is not in the scene.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasEdge, CanvasNode, CanvasSceneInput,
+    ///     CanvasViewport, LayoutError, LayoutExtras, RapierLayout, RapierLayoutState};
+    /// let scene = CanvasSceneInput::new(vec![CanvasNode::new(1_u32, Point2D::origin())], vec![CanvasEdge::new(1, 9)]);
+    /// let mut layout = RapierLayout::default();
+    /// let mut state = RapierLayoutState::default();
+    /// let err = layout.try_step(&scene, &mut state, 1.0 / 60.0, &CanvasViewport::default(), &LayoutExtras::default());
+    /// assert!(matches!(err, Err(LayoutError::UnknownEdgeEndpoint { missing: 9, .. })));
+    /// assert_eq!(state.step_count, 0);
+    /// assert!(!layout.has_world());
+    /// ```
+    pub fn try_step(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        state: &mut RapierLayoutState,
+        dt: f32,
+        _viewport: &CanvasViewport,
+        extras: &LayoutExtras<N>,
+    ) -> Result<DeltaMap<N>, LayoutError<N>> {
+        validate(scene)?;
+        Ok(self.advance(scene, state, dt, extras))
+    }
+}
+
+impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
+    type State = RapierLayoutState;
+
+    /// Advances the layout by `dt` seconds and returns each free node's displacement.
+    ///
+    /// Never panics on bad input: a node with a non-finite position or an invalid
+    /// radius is left out for this call (a node that already has a body stays where it
+    /// is, with no delta, until the host gives it usable values), repeated ids after the
+    /// first are ignored, and edges naming missing nodes are dropped.
+    fn step(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        state: &mut RapierLayoutState,
+        dt: f32,
+        _viewport: &CanvasViewport,
+        extras: &LayoutExtras<N>,
+    ) -> DeltaMap<N> {
+        self.advance(scene, state, dt, extras)
+    }
+
+    /// True when the layout is at rest: a world exists, no dynamic body moved faster
+    /// than [`RapierLayoutConfig::rest_speed`] for [`REST_TIME`] seconds of simulated
+    /// time, nothing (a drag, a release, a host move, a topology change) disturbed it
+    /// meanwhile, and every dynamic body is asleep; or a [`Cooling`](crate::Cooling)
+    /// schedule has ended and halted the world. Once true, calls report no motion until
+    /// something disturbs the layout.
+    fn is_converged(&self, _state: &RapierLayoutState) -> bool {
+        self.world.is_some() && self.rest.converged
+    }
+}
+
+// ── the stages of one call ────────────────────────────────────────────────────────────
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    fn advance(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        state: &mut RapierLayoutState,
+        dt: f32,
+        extras: &LayoutExtras<N>,
+    ) -> DeltaMap<N> {
+        state.step_count = state.step_count.wrapping_add(1);
+        if scene.nodes.is_empty() {
+            self.drop_world();
+            return DeltaMap::default();
+        }
+        let plan = self.plan_frame(state, dt);
+        let reconfigured = self.apply_config_changes();
+        let unfolding_before = self.heat.unfolding;
+        let mut disturbed = self.sync_topology(scene, extras);
+        // NOTE: every drive comes with a disturbance from `sync_in`.
+        disturbed |= self.sync_in(scene, extras, plan.frame_dt);
+        let gravity = Vector2D::new(
+            finite_or(state.gravity_x, 0.0),
+            finite_or(state.gravity_y, 0.0),
+        );
+        disturbed |= self.sync_gravity(gravity, reconfigured);
+        if !self.start_frame(disturbed, unfolding_before) {
+            return self.halted_frame(state, &plan);
+        }
+        let awake_before = self
+            .world
+            .as_ref()
+            .map_or(0, RapierSceneWorld::awake_body_count);
+        self.simulate(&plan, gravity);
+        self.collect_recovered();
+        state.simulated_time += f64::from(plan.simulated());
+        self.cool(plan.simulated());
+        let report = self.sync_out(scene, awake_before);
+        self.track_rest(disturbed, &report, plan.simulated());
+        report.deltas
+    }
+}

@@ -1,0 +1,78 @@
+//! Configuration changes between calls, and dropping the world: what a changed
+//! [`RapierLayoutConfig`] costs. Material, shape and collision changes drop the world
+//! (the next call builds a new one, losing all motion); joint changes replace the joints
+//! in place; everything else takes effect at once.
+
+use std::hash::Hash;
+
+use super::rest::Rest;
+use super::RapierLayout;
+#[cfg(doc)]
+use crate::config::RapierLayoutConfig;
+use crate::world::WorldOptions;
+
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    /// Applies what changed in [`RapierLayout::config`] since the world was built.
+    /// Returns whether anything changed: a new configuration is a disturbance, since it
+    /// may move what was at rest.
+    pub(super) fn apply_config_changes(&mut self) -> bool {
+        let Some(applied) = &self.applied else {
+            return false;
+        };
+        if *applied == self.config {
+            return false;
+        }
+        let structural = applied.material != self.config.material
+            || applied.collisions != self.config.collisions
+            || applied.contact_events != self.config.contact_events
+            || applied.default_radius.to_bits() != self.config.default_radius.to_bits();
+        if self.forces.any_active(applied) && !self.forces.any_active(&self.config) {
+            // Forces stay on bodies until reset: drop the last ones.
+            if let Some(world) = self.world.as_mut() {
+                world.reset_forces();
+            }
+        }
+        if applied.cooling.is_some() != self.config.cooling.is_some() {
+            // A schedule starts hot; without one the springs have their full stiffness.
+            self.heat.alpha = 1.0;
+            if let Some(world) = self.world.as_mut() {
+                world.set_spring_scale(1.0);
+            }
+        }
+        if structural {
+            self.world = None;
+            self.topology_hash = 0;
+        } else if applied.edge_joint != self.config.edge_joint
+            || applied.spring_degree_exponent.to_bits()
+                != self.config.spring_degree_exponent.to_bits()
+        {
+            if let Some(world) = self.world.as_mut() {
+                world.clear_edge_joints();
+            }
+            // Forces the topology pass to re-insert every joint.
+            self.topology_hash = 0;
+            self.matching.forget_edges();
+        }
+        self.applied = Some(self.config.clone());
+        true
+    }
+
+    /// The scene became empty: no world until the next non-empty scene.
+    pub(super) fn drop_world(&mut self) {
+        self.world = None;
+        self.topology_hash = 0;
+        self.applied = None;
+        self.matching.forget_edges();
+        self.rest = Rest::default();
+        self.heat.halted = false;
+        self.forces.reset();
+    }
+
+    /// What the world models under this configuration.
+    pub(super) fn world_options(&self) -> WorldOptions {
+        WorldOptions {
+            collisions: self.config.collisions,
+            contact_events: self.config.contact_events,
+        }
+    }
+}

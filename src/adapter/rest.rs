@@ -1,0 +1,80 @@
+//! Rest: when a layout says it is converged, and the cold stop that ends a cooling
+//! schedule by halting the world until the next disturbance.
+
+use std::hash::Hash;
+
+use super::heat::Heat;
+use super::state::RapierLayoutState;
+use super::sync_out::FrameReport;
+use super::RapierLayout;
+use crate::layout::DeltaMap;
+use crate::timestep::StepPlan;
+
+/// How long (simulated seconds) every dynamic body must stay under
+/// [`RapierLayoutConfig::rest_speed`](crate::RapierLayoutConfig::rest_speed) before
+/// [`Layout::is_converged`](crate::Layout::is_converged) says so; the same time rapier
+/// waits before putting a body to sleep.
+pub const REST_TIME: f32 = 0.5;
+
+/// The convergence signal.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Rest {
+    /// Simulated time since the last disturbance or fast body.
+    pub(crate) calm_time: f32,
+    /// What [`Layout::is_converged`](crate::Layout::is_converged) reports.
+    pub(crate) converged: bool,
+}
+
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    /// At rest: calm for [`REST_TIME`] and every dynamic body asleep, so a converged
+    /// layout reports no motion at all until something disturbs it; or halted by the
+    /// cold stop.
+    pub(super) fn track_rest(&mut self, disturbed: bool, report: &FrameReport<N>, simulated: f32) {
+        let calm = report.max_speed.is_finite() && report.max_speed <= self.config.rest_speed;
+        if disturbed || !calm {
+            self.rest.calm_time = 0.0;
+        } else {
+            self.rest.calm_time += simulated;
+        }
+        self.rest.converged = self.rest.calm_time >= REST_TIME && report.awake == 0;
+        if self.rest.converged && self.end_unfolding() {
+            // At rest before the heat let contacts in: rest again once any overlap they
+            // find is parted.
+            self.rest.converged = false;
+        }
+        self.rest.converged |= self.heat.halted;
+    }
+
+    /// A call on a halted layout: nothing moves until the next disturbance.
+    pub(super) fn halted_frame(
+        &mut self,
+        state: &mut RapierLayoutState,
+        plan: &StepPlan,
+    ) -> DeltaMap<N> {
+        state.simulated_time += f64::from(plan.simulated());
+        self.recovered.clear();
+        self.rest.converged = true;
+        DeltaMap::default()
+    }
+
+    /// The end of a cooling schedule: once the heat has stayed at its floor for
+    /// [`REST_TIME`], every dynamic body is halted (velocity zeroed) and the world is not
+    /// stepped again until a disturbance, like d3-force stopping its simulation at
+    /// `alphaMin`. Forces are a thousandth of their strength by then, but in a large
+    /// connected graph a few bodies jostling in contact would otherwise keep the whole
+    /// graph (one rapier island) awake for ever.
+    pub(super) fn stop_when_cold(&mut self, floor: f32, simulated: f32) {
+        let heat: &mut Heat = &mut self.heat;
+        if heat.alpha > floor {
+            heat.cold_time = 0.0;
+            return;
+        }
+        heat.cold_time += simulated;
+        if let Some(world) = self.world.as_mut() {
+            if heat.cold_time >= REST_TIME {
+                world.halt_dynamic_bodies();
+                heat.halted = true;
+            }
+        }
+    }
+}

@@ -1,0 +1,286 @@
+//! Sync in: the host's side of every node onto its body, before the simulation. Body
+//! kinds follow pins, drags and unusable input, flipped in place (no rebuild, motion
+//! kept); what each kind of node then needs:
+//!
+//! - **frozen** (unusable values this call): held still where it is;
+//! - **free**: a release, unpin or unfreeze hands it back to the physics (a release
+//!   throws it, `drag.rs`); a host edit puts it where the host put it, at rest;
+//! - **held** (pinned or dragged): driven to the host's position, kinematically over the
+//!   call's substeps or, for a static anchor, at once; sleeping bodies in its path are
+//!   woken, which rapier does not do.
+
+use std::hash::Hash;
+
+use euclid::default::{Point2D, Vector2D};
+use rapier2d::prelude::{RigidBodyType, Vector};
+
+use super::drag::{release_velocity, track_drag, Drive};
+use super::edits::radius_of;
+use super::matching::{NodeMatch, NO_SLOT};
+use super::RapierLayout;
+use crate::config::BodyKindPolicy;
+use crate::input::scene::{CanvasNode, CanvasSceneInput};
+use crate::layout::LayoutExtras;
+use crate::world::bindings::ColliderSpec;
+use crate::world::RapierSceneWorld;
+
+/// Host moves of kinematic and fixed bodies per call that each wake the sleeping bodies
+/// in their path; beyond them, every sleeping body is woken once (one O(n) pass instead
+/// of one per move).
+const MAX_SWEEPS: usize = 16;
+
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    /// Returns whether the host disturbed the layout (drag, release, host move, pin
+    /// change, radius edit).
+    pub(super) fn sync_in(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+        frame_dt: f32,
+    ) -> bool {
+        self.drives.clear();
+        let check_drags = !extras.dragging.is_empty();
+        let mut disturbed = false;
+        let mut sweeps = 0_usize;
+        for (i, node) in scene.nodes.iter().enumerate() {
+            let m = self.matching.matches()[i];
+            if m.slot == NO_SLOT {
+                continue;
+            }
+            let dragging = m.valid && check_drags && extras.dragging.contains(&node.id);
+            disturbed |= self.sync_node(node, m, dragging, frame_dt, &mut sweeps);
+        }
+        disturbed
+    }
+
+    /// Syncs one matched node; returns whether it disturbed the layout.
+    fn sync_node(
+        &mut self,
+        node: &CanvasNode<N>,
+        m: NodeMatch,
+        dragging: bool,
+        frame_dt: f32,
+        sweeps: &mut usize,
+    ) -> bool {
+        let s = m.slot as usize;
+        let desired = desired_type(self.config.body_kind_policy, m.valid, m.pinned, dragging);
+        let radius = radius_of(&self.config, node);
+        let density = self.config.material.density;
+        let max_speed = self.config.max_speed;
+        let Some(world) = self.world.as_mut() else {
+            return false;
+        };
+        let mut disturbed = false;
+        if m.valid {
+            disturbed |= sync_radius(world, s, radius, density);
+        }
+        let before = *world.host_at(s);
+        let host = node.position;
+        if before.synced
+            && desired == Some(RigidBodyType::Dynamic)
+            && !dragging
+            && before.told == host
+        {
+            // A free body the host left where it was told: nothing to sync, and no need
+            // to touch the body at all (the common case at rest).
+            world.set_anchor_at(s, host);
+            return disturbed;
+        }
+        // NOTE: read first: a mutable access marks the body as modified for rapier,
+        // which then re-processes it (and may wake it) at the next step.
+        let body = world.body_at(s);
+        let current = body.body_type();
+        let body_pos = Point2D::new(body.translation().x, body.translation().y);
+        match desired {
+            None => {
+                freeze(world, s, current, body_pos);
+                return disturbed;
+            }
+            Some(RigidBodyType::Dynamic) => {
+                disturbed |= free(world, s, current, body_pos, host);
+            }
+            Some(kind) => {
+                // Held: the body takes `kind` and goes to the host's position, at once
+                // for a fixed body, over the substeps for a kinematic one.
+                disturbed |= flip_to(world, s, current, kind);
+                if body_pos != host {
+                    wake_in_path(world, s, body_pos, host, sweeps);
+                    if kind == RigidBodyType::Fixed {
+                        world
+                            .body_at_mut(s)
+                            .set_translation(Vector::new(host.x, host.y), true);
+                    } else {
+                        self.drives.push(Drive {
+                            slot: m.slot,
+                            from: body_pos,
+                            to: host,
+                        });
+                    }
+                    disturbed = true;
+                }
+            }
+        }
+        world.set_anchor_at(s, host);
+        let sync = world.host_at_mut(s);
+        sync.fresh = false;
+        sync.pinned = m.pinned;
+        sync.told = host;
+        if dragging {
+            track_drag(sync, host, before.dragging, frame_dt, max_speed);
+            disturbed = true;
+        }
+        sync.dragging = dragging;
+        sync.synced = desired == Some(RigidBodyType::Dynamic) && !dragging;
+        disturbed
+    }
+
+    /// A gravity change is a disturbance, and so is a new configuration: nothing in the
+    /// scene changed, yet bodies at rest may now be pushed. Returns whether either
+    /// happened.
+    pub(super) fn sync_gravity(&mut self, gravity: Vector2D<f32>, reconfigured: bool) -> bool {
+        let disturbed = reconfigured || gravity != self.gravity;
+        if disturbed {
+            if let Some(world) = self.world.as_mut() {
+                world.wake_dynamic_bodies();
+            }
+        }
+        self.gravity = gravity;
+        disturbed
+    }
+}
+
+/// The body type a node should have this call; `None` for unusable values (frozen).
+fn desired_type(
+    policy: BodyKindPolicy,
+    valid: bool,
+    pinned: bool,
+    dragging: bool,
+) -> Option<RigidBodyType> {
+    if !valid {
+        return None;
+    }
+    Some(if pinned && policy == BodyKindPolicy::PinnedStatic {
+        RigidBodyType::Fixed
+    } else if pinned || dragging || policy == BodyKindPolicy::AllKinematic {
+        RigidBodyType::KinematicPositionBased
+    } else {
+        RigidBodyType::Dynamic
+    })
+}
+
+/// A radius edit reshapes the disk in place; returns whether the radius changed.
+fn sync_radius<N: Clone + Eq + Hash>(
+    world: &mut RapierSceneWorld<N>,
+    s: usize,
+    radius: f32,
+    density: f32,
+) -> bool {
+    match world.shape_at(s) {
+        ColliderSpec::Circle { radius: r } if r.to_bits() != radius.to_bits() => {
+            world.set_shape_at(s, ColliderSpec::Circle { radius }, density);
+            true
+        }
+        _ => false,
+    }
+}
+
+/// Unusable input: holds the body still where it is, and anchors it there.
+fn freeze<N: Clone + Eq + Hash>(
+    world: &mut RapierSceneWorld<N>,
+    s: usize,
+    current: RigidBodyType,
+    body_pos: Point2D<f32>,
+) {
+    if current == RigidBodyType::Dynamic {
+        let body = world.body_at_mut(s);
+        body.set_body_type(RigidBodyType::KinematicPositionBased, true);
+        body.set_linvel(Vector::ZERO, false);
+    }
+    let sync = world.host_at_mut(s);
+    sync.dragging = false;
+    sync.synced = false;
+    world.set_anchor_at(s, body_pos);
+}
+
+/// A node the physics moves. A release, unpin or unfreeze hands the body back in place
+/// at the host's position, with the drag's velocity when it was thrown; a host edit of
+/// a free node puts the body there, at rest. Returns whether either happened.
+fn free<N: Clone + Eq + Hash>(
+    world: &mut RapierSceneWorld<N>,
+    s: usize,
+    current: RigidBodyType,
+    body_pos: Point2D<f32>,
+    host: Point2D<f32>,
+) -> bool {
+    let sync = *world.host_at(s);
+    if current != RigidBodyType::Dynamic {
+        let velocity = release_velocity(&sync, sync.dragging);
+        let body = world.body_at_mut(s);
+        body.set_body_type(RigidBodyType::Dynamic, true);
+        if body_pos != host {
+            body.set_translation(Vector::new(host.x, host.y), true);
+        }
+        body.set_linvel(Vector::new(velocity.x, velocity.y), true);
+        true
+    } else if !sync.fresh && moved_by_host(sync.told, host) {
+        let body = world.body_at_mut(s);
+        body.set_translation(Vector::new(host.x, host.y), true);
+        body.set_linvel(Vector::ZERO, true);
+        true
+    } else {
+        false
+    }
+}
+
+/// Flips a held body to `kind` in place, at rest; returns whether it was another kind.
+fn flip_to<N: Clone + Eq + Hash>(
+    world: &mut RapierSceneWorld<N>,
+    s: usize,
+    current: RigidBodyType,
+    kind: RigidBodyType,
+) -> bool {
+    if current == kind {
+        return false;
+    }
+    let body = world.body_at_mut(s);
+    body.set_body_type(kind, true);
+    body.set_linvel(Vector::ZERO, true);
+    true
+}
+
+/// Wakes the sleeping bodies in the path of the held body in `s` moving from `from` to
+/// `to`: rapier does not wake a sleeping body that a kinematic or fixed body is moved
+/// into. Past [`MAX_SWEEPS`] moves in one call, one pass wakes every body instead.
+fn wake_in_path<N: Clone + Eq + Hash>(
+    world: &mut RapierSceneWorld<N>,
+    s: usize,
+    from: Point2D<f32>,
+    to: Point2D<f32>,
+    sweeps: &mut usize,
+) {
+    *sweeps += 1;
+    if *sweeps <= MAX_SWEEPS {
+        world.wake_bodies_near_sweep(s, from, to);
+    } else if *sweeps == MAX_SWEEPS + 1 {
+        world.wake_dynamic_bodies();
+    }
+}
+
+/// Whether the host moved a free node: its position differs from the one it was told
+/// (its last position plus the last delta) by more than float noise at that magnitude.
+/// A host that adds deltas with `+=` lands on it bit for bit; any edit, however small,
+/// is honoured.
+fn moved_by_host(told: Point2D<f32>, host: Point2D<f32>) -> bool {
+    let gap_sq = (told - host).square_length();
+    if gap_sq == 0.0 {
+        return false;
+    }
+    let magnitude = told
+        .x
+        .abs()
+        .max(told.y.abs())
+        .max(host.x.abs())
+        .max(host.y.abs());
+    let tolerance = (magnitude * 4.0 * f32::EPSILON).max(f32::MIN_POSITIVE);
+    gap_sq > tolerance * tolerance
+}

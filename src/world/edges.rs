@@ -1,0 +1,231 @@
+//! Joints in, re-tuned and out, keyed by the serials of their two nodes (never reused),
+//! visited in insertion order so the same calls give the same world. What each kind
+//! becomes in rapier is `rapier_joint.rs`; the factor every spring is scaled by is
+//! `spring_scale.rs`.
+
+use std::hash::Hash;
+
+use rapier2d::prelude::GenericJoint;
+
+use super::rapier_joint::{max_resolved_stiffness, rapier_joint, scaled_spring};
+use super::slot::{joint_key, JointSlot};
+use super::RapierSceneWorld;
+use crate::config::EdgeJoint;
+use crate::world::bindings::EdgeJointSpec;
+
+impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
+    /// Builds one spring joint per edge. Edges naming a node without a body, self-loops
+    /// and repeats of an existing pair (in either direction) are skipped.
+    pub fn build_edge_joints(&mut self, edges: &[(N, N, EdgeJointSpec)]) {
+        for (a, b, spec) in edges {
+            self.insert_edge_joint(a, b, &EdgeJoint::from(*spec));
+        }
+    }
+
+    /// Inserts the joint `kind` between `a` and `b` and returns whether one was
+    /// inserted: not for [`EdgeJoint::None`], a self-loop, a missing node, or a pair that
+    /// already has a joint.
+    pub fn insert_edge_joint(&mut self, a: &N, b: &N, kind: &EdgeJoint) -> bool {
+        let (Some(&ia), Some(&ib)) = (self.index.get(a), self.index.get(b)) else {
+            return false;
+        };
+        if ia == ib {
+            return false;
+        }
+        let (sa, sb) = (&self.slots[ia as usize], &self.slots[ib as usize]);
+        let key = joint_key(sa.serial, sb.serial);
+        if self.joint_index.contains_key(&key) {
+            return false;
+        }
+        let (body_a, body_b) = (sa.body, sb.body);
+        let Some(joint) = self.joint_data(ia, ib, kind, self.spring_scale.applied) else {
+            return false;
+        };
+        let handle = self.impulse_joints.insert(body_a, body_b, joint, true);
+        self.joint_index.insert(key, self.joints.len() as u32);
+        self.joints.push(JointSlot {
+            key,
+            handle,
+            a: a.clone(),
+            b: b.clone(),
+            kind: *kind,
+        });
+        self.version += 1;
+        true
+    }
+
+    /// Gives every joint the kind `kind_of(a, b)` names, in place: bodies keep their
+    /// motion, and joints already of that kind are left untouched. A joint whose new
+    /// kind is [`EdgeJoint::None`] is removed. Joints are visited in insertion order.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, EdgeJoint, NodeAvatarBinding,
+    ///     NodeSnapshot, RapierSceneWorld};
+    /// let mut world = RapierSceneWorld::new();
+    /// let snap = |id, x| NodeSnapshot { id, position: Point2D::new(x, 0.0), radius: 16.0, pinned: false };
+    /// world.build_bodies(
+    ///     &[NodeAvatarBinding::circle(0_u32, 16.0), NodeAvatarBinding::circle(1, 16.0)],
+    ///     &[snap(0, 0.0), snap(1, 300.0)],
+    /// );
+    /// world.insert_edge_joint(&0, &1, &EdgeJoint::default());
+    /// let softer = EdgeJoint::Spring { rest_length: 100.0, stiffness: 5.0, damping: 1.0 };
+    /// assert_eq!(world.retune_edge_joints(|_, _| softer), 1);
+    /// assert_eq!(world.retune_edge_joints(|_, _| softer), 0, "already that kind");
+    /// assert_eq!(world.joint_count(), 1);
+    /// ```
+    pub fn retune_edge_joints(&mut self, mut kind_of: impl FnMut(&N, &N) -> EdgeJoint) -> usize {
+        let mut changed = 0;
+        let mut i = 0;
+        while i < self.joints.len() {
+            let kind = kind_of(&self.joints[i].a, &self.joints[i].b);
+            if kind == self.joints[i].kind {
+                i += 1;
+                continue;
+            }
+            changed += 1;
+            self.version += 1;
+            let ends = (
+                self.index.get(&self.joints[i].a),
+                self.index.get(&self.joints[i].b),
+            );
+            let built = match ends {
+                (Some(&ia), Some(&ib)) => self.joint_data(ia, ib, &kind, self.spring_scale.applied),
+                _ => None,
+            };
+            match built {
+                Some(data) => {
+                    let slot = &mut self.joints[i];
+                    slot.kind = kind;
+                    if let Some(joint) = self.impulse_joints.get_mut(slot.handle, true) {
+                        joint.data = data;
+                    }
+                    i += 1;
+                }
+                None => self.remove_joint_at(i, true),
+            }
+        }
+        changed
+    }
+
+    /// Removes the joint between `a` and `b` (either order). Returns whether there was one.
+    pub fn remove_edge_joint(&mut self, a: &N, b: &N) -> bool {
+        let (Some(&ia), Some(&ib)) = (self.index.get(a), self.index.get(b)) else {
+            return false;
+        };
+        let key = joint_key(
+            self.slots[ia as usize].serial,
+            self.slots[ib as usize].serial,
+        );
+        match self.joint_index.get(&key) {
+            Some(&i) => {
+                self.remove_joint_at(i as usize, true);
+                true
+            }
+            None => false,
+        }
+    }
+
+    pub(super) fn remove_joint_at(&mut self, i: usize, remove_from_rapier: bool) {
+        self.version += 1;
+        let removed = self.joints.swap_remove(i);
+        self.joint_index.remove(&removed.key);
+        if remove_from_rapier {
+            self.impulse_joints.remove(removed.handle, true);
+        }
+        if let Some(moved) = self.joints.get(i) {
+            self.joint_index.insert(moved.key, i as u32);
+        }
+    }
+
+    /// Keeps only the joints for which `keep(a, b)` is true, visiting them in insertion
+    /// order (swap removals aside), so the same calls give the same world.
+    pub fn retain_edge_joints(&mut self, mut keep: impl FnMut(&N, &N) -> bool) {
+        let mut i = 0;
+        while i < self.joints.len() {
+            if keep(&self.joints[i].a, &self.joints[i].b) {
+                i += 1;
+            } else {
+                self.remove_joint_at(i, true);
+            }
+        }
+    }
+
+    /// Removes every joint, keeping the bodies and their motion.
+    pub fn clear_edge_joints(&mut self) {
+        self.version += 1;
+        for joint in self.joints.drain(..) {
+            self.impulse_joints.remove(joint.handle, true);
+        }
+        self.joint_index.clear();
+    }
+
+    /// Whether the pair (either order) has a joint.
+    pub fn contains_joint(&self, a: &N, b: &N) -> bool {
+        self.edge_joint(a, b).is_some()
+    }
+
+    /// The joint between `a` and `b` (either order) as it was built, before the
+    /// stiffness limit: with
+    /// [`RapierLayoutConfig::spring_degree_exponent`](crate::RapierLayoutConfig::spring_degree_exponent)
+    /// a spring's share of the configured stiffness shows here. `None` without a joint.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, EdgeJoint, NodeAvatarBinding,
+    ///     NodeSnapshot, RapierSceneWorld};
+    /// let mut world = RapierSceneWorld::new();
+    /// let snap = |id, x| NodeSnapshot { id, position: Point2D::new(x, 0.0), radius: 16.0, pinned: false };
+    /// world.build_bodies(
+    ///     &[NodeAvatarBinding::circle(0_u32, 16.0), NodeAvatarBinding::circle(1, 16.0)],
+    ///     &[snap(0, 0.0), snap(1, 300.0)],
+    /// );
+    /// world.insert_edge_joint(&0, &1, &EdgeJoint::default());
+    /// assert_eq!(world.edge_joint(&1, &0), Some(EdgeJoint::default()));
+    /// assert_eq!(world.edge_joint(&0, &0), None);
+    /// ```
+    pub fn edge_joint(&self, a: &N, b: &N) -> Option<EdgeJoint> {
+        let (ia, ib) = (self.slot_of(a)?, self.slot_of(b)?);
+        let key = joint_key(self.slots[ia].serial, self.slots[ib].serial);
+        let &i = self.joint_index.get(&key)?;
+        Some(self.joints[i as usize].kind)
+    }
+
+    /// Every spring joint as `(slot a, slot b, rest length, stiffness, stiffness cap)`,
+    /// in joint order: the stiffness as inserted (before the spring scale), the cap what
+    /// the joint timestep resolves for the two bodies. Valid until
+    /// [`version`](Self::version) changes.
+    pub(crate) fn springs(&self) -> impl Iterator<Item = (usize, usize, f32, f32, f32)> + '_ {
+        self.joints.iter().filter_map(|joint| {
+            let EdgeJoint::Spring {
+                rest_length,
+                stiffness,
+                ..
+            } = joint.kind
+            else {
+                return None;
+            };
+            let (a, b) = (
+                *self.index.get(&joint.a)? as usize,
+                *self.index.get(&joint.b)? as usize,
+            );
+            let (ma, mb) = (self.slots[a].mass, self.slots[b].mass);
+            let cap = max_resolved_stiffness(ma * mb / (ma + mb), self.joint_dt);
+            Some((a, b, rest_length, stiffness, cap))
+        })
+    }
+
+    /// The rapier joint for `kind` between the bodies in slots `a` and `b`: springs
+    /// scaled by `scale` and capped for the bodies' reduced mass at the joint timestep.
+    pub(super) fn joint_data(
+        &self,
+        a: u32,
+        b: u32,
+        kind: &EdgeJoint,
+        scale: f32,
+    ) -> Option<GenericJoint> {
+        let (ma, mb) = (self.slots[a as usize].mass, self.slots[b as usize].mass);
+        let built = scaled_spring(kind, |x| x * scale);
+        rapier_joint(&built, ma * mb / (ma + mb), self.joint_dt)
+    }
+}

@@ -1,0 +1,117 @@
+//! The bookkeeping the world keeps beside rapier's bodies and joints: per node its
+//! body, shape, mass and anchor, plus the adapter's sync state ([`HostSync`]), which
+//! moves with the slot when a removal swaps another node into its place; per joint its
+//! key and the [`EdgeJoint`] it was built as.
+
+use std::hash::Hash;
+
+use euclid::default::{Point2D, Vector2D};
+use rapier2d::prelude::{ColliderHandle, ImpulseJointHandle, RigidBodyHandle};
+
+use super::RapierSceneWorld;
+use crate::config::EdgeJoint;
+use crate::world::bindings::ColliderSpec;
+
+/// One node's body and the bookkeeping kept for it.
+#[derive(Clone, Debug)]
+pub(crate) struct NodeSlot<N> {
+    pub(crate) id: N,
+    /// Never reused: names the node in joint keys across swaps and removals.
+    pub(crate) serial: u64,
+    pub(crate) body: RigidBodyHandle,
+    pub(crate) collider: Option<ColliderHandle>,
+    pub(crate) shape: ColliderSpec,
+    pub(crate) mass: f32,
+    /// The anchor `read_positions` measures from.
+    pub(crate) anchor: Point2D<f32>,
+    /// What the adapter knows of the host's side of this node.
+    pub(crate) host: HostSync,
+}
+
+/// What [`RapierLayout`](crate::RapierLayout) keeps per node between calls: what it
+/// told the host, the node's pin and drag state, and whether the next sync can skip it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct HostSync {
+    /// Where the host should have the node after adding the last delta it was given:
+    /// a host position elsewhere is a host edit.
+    pub(crate) told: Point2D<f32>,
+    /// Call number in which the adapter last saw this node in the scene.
+    pub(crate) stamp: u64,
+    pub(crate) pinned: bool,
+    pub(crate) dragging: bool,
+    /// The host's position of a dragged node at the last call, and the pointer's
+    /// velocity measured from it: what a release throws the node with.
+    pub(crate) drag_position: Point2D<f32>,
+    pub(crate) drag_velocity: Vector2D<f32>,
+    /// Inserted during this call: its body may sit off the host's position (coincident
+    /// nodes are spread), which is not a host move.
+    pub(crate) fresh: bool,
+    /// The last sync left this body dynamic and free (not dragged, pinned or frozen):
+    /// while the host keeps the position it was told, the next sync has nothing to do.
+    pub(crate) synced: bool,
+}
+
+impl HostSync {
+    /// A node just inserted at `position`.
+    pub(crate) fn new(position: Point2D<f32>) -> Self {
+        Self {
+            told: position,
+            stamp: 0,
+            pinned: false,
+            dragging: false,
+            drag_position: position,
+            drag_velocity: Vector2D::zero(),
+            fresh: true,
+            synced: false,
+        }
+    }
+}
+
+/// One joint and the edge it stands for.
+#[derive(Clone, Debug)]
+pub(crate) struct JointSlot<N> {
+    pub(crate) key: (u64, u64),
+    pub(crate) handle: ImpulseJointHandle,
+    pub(crate) a: N,
+    pub(crate) b: N,
+    /// What the joint was built as: a re-tune to the same kind is skipped.
+    pub(crate) kind: EdgeJoint,
+}
+
+/// The key of the joint between the nodes of serials `a` and `b`, in either order.
+pub(crate) fn joint_key(a: u64, b: u64) -> (u64, u64) {
+    (a.min(b), a.max(b))
+}
+
+// ── the adapter's access to a slot ────────────────────────────────────────────────────
+impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
+    /// The node in `slot`.
+    pub(crate) fn id_at(&self, slot: usize) -> &N {
+        &self.slots[slot].id
+    }
+
+    /// The adapter's sync state of the node in `slot`.
+    pub(crate) fn host_at(&self, slot: usize) -> &HostSync {
+        &self.slots[slot].host
+    }
+
+    /// The adapter's sync state of the node in `slot`, to update.
+    pub(crate) fn host_at_mut(&mut self, slot: usize) -> &mut HostSync {
+        &mut self.slots[slot].host
+    }
+
+    /// The anchor of the node in `slot`: where `read_positions` measures from.
+    pub(crate) fn anchor_at(&self, slot: usize) -> Point2D<f32> {
+        self.slots[slot].anchor
+    }
+
+    /// Moves the anchor of the node in `slot` (what `rebase_initial_position` does by id).
+    pub(crate) fn set_anchor_at(&mut self, slot: usize, anchor: Point2D<f32>) {
+        self.slots[slot].anchor = anchor;
+    }
+
+    /// The shape of the node in `slot`.
+    pub(crate) fn shape_at(&self, slot: usize) -> ColliderSpec {
+        self.slots[slot].shape
+    }
+}

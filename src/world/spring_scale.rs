@@ -1,0 +1,183 @@
+//! Every spring scaled at once, in place: a cooling layout fades its springs with its
+//! heat, and a graph far from its rest lengths (by the springs' median stretch) lets them
+//! fade faster ([`Cooling::stretch_limit`](crate::Cooling::stretch_limit)).
+
+use std::hash::Hash;
+
+use super::RapierSceneWorld;
+use crate::config::EdgeJoint;
+use crate::sanitize::{finite_or, positive_or};
+
+/// The factor on every spring's stiffness and damping, and the inputs of the last
+/// [`RapierSceneWorld::set_spring_scale_by_stretch`] that chose it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SpringScale {
+    /// The factor near the rest lengths (a cooling layout's `heat^spring_exponent`).
+    pub(super) near: f32,
+    /// The factor far from them (the heat).
+    pub(super) far: f32,
+    /// The median stretch from which `far` blends in.
+    pub(super) limit: f32,
+    /// The factor every spring has now.
+    pub(super) applied: f32,
+    /// [`version`](RapierSceneWorld::version) when the median stretch was last read: an
+    /// edit re-reads it even at unchanged factors.
+    pub(super) version: u64,
+}
+
+impl Default for SpringScale {
+    fn default() -> Self {
+        Self {
+            near: 1.0,
+            far: 1.0,
+            limit: f32::INFINITY,
+            applied: 1.0,
+            version: 0,
+        }
+    }
+}
+
+impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
+    /// Multiplies every spring's stiffness and damping by `scale` (relative to the kind
+    /// it was inserted as), in place and without waking anything; new springs take the
+    /// factor too. A cooling layout passes its spring factor through
+    /// [`set_spring_scale_by_stretch`](Self::set_spring_scale_by_stretch). Non-finite or negative values
+    /// count as 0. Returns how many joints changed.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, EdgeJoint, NodeAvatarBinding,
+    ///     NodeSnapshot, RapierSceneWorld};
+    /// let mut world = RapierSceneWorld::new();
+    /// let snap = |id, x| NodeSnapshot { id, position: Point2D::new(x, 0.0), radius: 16.0, pinned: false };
+    /// world.build_bodies(
+    ///     &[NodeAvatarBinding::circle(0_u32, 16.0), NodeAvatarBinding::circle(1, 16.0)],
+    ///     &[snap(0, 0.0), snap(1, 300.0)],
+    /// );
+    /// world.insert_edge_joint(&0, &1, &EdgeJoint::default());
+    /// assert_eq!(world.set_spring_scale(0.5), 1);
+    /// assert_eq!(world.spring_scale(), 0.5);
+    /// assert_eq!(world.edge_joint(&0, &1), Some(EdgeJoint::default()), "the kind is unscaled");
+    /// ```
+    pub fn set_spring_scale(&mut self, scale: f32) -> usize {
+        self.set_spring_scale_by_stretch(scale, scale, f32::INFINITY)
+    }
+
+    /// Like [`set_spring_scale`](Self::set_spring_scale), choosing the factor by how far
+    /// the graph is from its rest lengths: every spring is scaled by `near` while the
+    /// springs' median stretch (length over rest length, read now) is at most
+    /// `stretch_limit`, by `far` once it is twice that or more, and by a geometric blend
+    /// of the two in between. A non-finite or non-positive limit always gives `near`.
+    /// A cooling layout passes `heat^spring_exponent`, the heat and
+    /// [`Cooling::stretch_limit`](crate::Cooling::stretch_limit). Calls with the same three
+    /// values as the last are skipped unless bodies or joints changed since (the median
+    /// is read again then). Returns how many joints changed.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, EdgeJoint, NodeAvatarBinding,
+    ///     NodeSnapshot, RapierSceneWorld};
+    /// let mut world = RapierSceneWorld::new();
+    /// let snap = |id, x| NodeSnapshot { id, position: Point2D::new(x, 0.0), radius: 16.0, pinned: false };
+    /// let bind = |id| NodeAvatarBinding::circle(id, 16.0);
+    /// world.build_bodies(&[bind(0_u32), bind(1)], &[snap(0, 0.0), snap(1, 450.0)]);
+    /// world.insert_edge_joint(&0, &1, &EdgeJoint::default()); // rest length 100
+    /// // Stretched 4.5 times: half way from a limit of 3 to twice it.
+    /// assert_eq!(world.set_spring_scale_by_stretch(0.04, 0.01, 3.0), 1);
+    /// assert!((world.applied_spring_scale() - 0.02).abs() < 1e-6, "{}", world.applied_spring_scale());
+    /// // Within 10 times its rest length: `near`.
+    /// world.set_spring_scale_by_stretch(0.04, 0.01, 10.0);
+    /// assert_eq!(world.applied_spring_scale(), 0.04);
+    /// ```
+    pub fn set_spring_scale_by_stretch(
+        &mut self,
+        near: f32,
+        far: f32,
+        stretch_limit: f32,
+    ) -> usize {
+        let near = finite_or(near, 0.0).max(0.0);
+        let far = finite_or(far, 0.0).max(0.0);
+        let limit = positive_or(stretch_limit, f32::INFINITY);
+        // The median matters only between two different factors.
+        let by_stretch = limit.is_finite() && near.to_bits() != far.to_bits();
+        let last = self.spring_scale;
+        if (near, far, limit) == (last.near, last.far, last.limit)
+            && (!by_stretch || last.version == self.version)
+        {
+            return 0;
+        }
+        self.spring_scale = SpringScale {
+            near,
+            far,
+            limit,
+            version: self.version,
+            ..last
+        };
+        let blend = if by_stretch {
+            (self.median_spring_stretch() / limit - 1.0).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        let scale = if blend > 0.0 {
+            finite_or(near.powf(1.0 - blend) * far.powf(blend), near)
+        } else {
+            near
+        };
+        if scale.to_bits() == last.applied.to_bits() {
+            return 0;
+        }
+        self.spring_scale.applied = scale;
+        let mut changed = 0;
+        for joint in &self.joints {
+            if !matches!(joint.kind, EdgeJoint::Spring { .. }) {
+                continue;
+            }
+            let (Some(&ia), Some(&ib)) = (self.index.get(&joint.a), self.index.get(&joint.b))
+            else {
+                continue;
+            };
+            if let (Some(data), Some(rapier)) = (
+                self.joint_data(ia, ib, &joint.kind, scale),
+                self.impulse_joints.get_mut(joint.handle, false),
+            ) {
+                rapier.data = data;
+                changed += 1;
+            }
+        }
+        changed
+    }
+
+    /// The median of length over rest length across the springs (0 without any).
+    fn median_spring_stretch(&self) -> f32 {
+        let mut stretches: Vec<f32> = self
+            .springs()
+            // A rest length that is not finite and positive builds a joint of rest 0
+            // (infinitely stretched): left out, as it says nothing about the layout.
+            .filter(|&(_, _, rest_length, _, _)| rest_length.is_finite() && rest_length > 0.0)
+            .filter_map(|(a, b, rest_length, _, _)| {
+                let length = (self.position_at(a) - self.position_at(b)).length();
+                let stretch = length / rest_length;
+                stretch.is_finite().then_some(stretch)
+            })
+            .collect();
+        if stretches.is_empty() {
+            return 0.0;
+        }
+        let mid = stretches.len() / 2;
+        *stretches.select_nth_unstable_by(mid, f32::total_cmp).1
+    }
+
+    /// The factor [`set_spring_scale`](Self::set_spring_scale) last set, or the `near`
+    /// factor of [`set_spring_scale_by_stretch`](Self::set_spring_scale_by_stretch)
+    /// (1 by default).
+    pub fn spring_scale(&self) -> f32 {
+        self.spring_scale.near
+    }
+
+    /// The factor every spring's stiffness and damping has now: what the last
+    /// [`set_spring_scale_by_stretch`](Self::set_spring_scale_by_stretch) chose (1 by
+    /// default).
+    pub fn applied_spring_scale(&self) -> f32 {
+        self.spring_scale.applied
+    }
+}

@@ -1,0 +1,78 @@
+//! Advancing the world: the timestep joints are tuned for, rapier's integration
+//! parameters, and one rapier step followed by recovery and event collection.
+
+use std::hash::Hash;
+
+use euclid::default::Vector2D;
+use rapier2d::prelude::{IntegrationParameters, Vector};
+
+use super::RapierSceneWorld;
+use crate::sanitize::finite_or;
+
+impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
+    /// Sets the length of the next steps, in seconds. Non-finite or non-positive values
+    /// are ignored.
+    ///
+    /// # Example
+    /// ```
+    /// let mut world = graph_canvas_layout::RapierSceneWorld::<u32>::new();
+    /// world.set_timestep(1.0 / 120.0);
+    /// assert_eq!(world.integration_parameters().dt, 1.0 / 120.0);
+    /// ```
+    pub fn set_timestep(&mut self, dt: f32) {
+        if dt.is_finite() && dt > 0.0 {
+            self.params.dt = dt;
+            self.version += 1;
+            self.joint_dt = dt;
+        }
+    }
+
+    /// Rapier's integration parameters (timestep, solver iterations, length unit).
+    pub fn integration_parameters(&self) -> &IntegrationParameters {
+        &self.params
+    }
+
+    /// Rapier's integration parameters, to tune.
+    pub fn integration_parameters_mut(&mut self) -> &mut IntegrationParameters {
+        &mut self.params
+    }
+
+    /// Advances the world by one timestep under `gravity` (world units per second²;
+    /// non-finite components count as zero). Contacts are recorded for
+    /// [`read_events`](Self::read_events) when the world reports events; bodies whose
+    /// state went non-finite are put back, at rest, where rapier last saw them valid.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::{Point2D, Vector2D}, NodeAvatarBinding, NodeSnapshot, RapierSceneWorld};
+    /// let mut world = RapierSceneWorld::new();
+    /// let snap = NodeSnapshot { id: 0_u32, position: Point2D::origin(), radius: 16.0, pinned: false };
+    /// world.build_bodies(&[NodeAvatarBinding::circle(0, 16.0)], &[snap]);
+    /// world.step(Vector2D::new(0.0, 600.0));
+    /// assert!(world.linear_velocity(&0).unwrap().y > 0.0);
+    /// ```
+    pub fn step(&mut self, gravity: Vector2D<f32>) {
+        let gravity = Vector::new(finite_or(gravity.x, 0.0), finite_or(gravity.y, 0.0));
+        let events: &dyn rapier2d::pipeline::EventHandler = match &self.collector {
+            Some(collector) => collector,
+            None => &(),
+        };
+        self.pipeline.step(
+            gravity,
+            &self.params,
+            &mut self.islands,
+            &mut self.broad_phase,
+            &mut self.narrow_phase,
+            &mut self.bodies,
+            &mut self.colliders,
+            &mut self.impulse_joints,
+            &mut self.multibody_joints,
+            &mut self.soft_bodies,
+            &mut self.ccd_solver,
+            &(),
+            events,
+        );
+        self.recover_quarantined();
+        self.collect_events();
+    }
+}

@@ -18,7 +18,7 @@ use super::drag::{release_velocity, track_drag, Drive};
 use super::edits::radius_of;
 use super::matching::{NodeMatch, NO_SLOT};
 use super::RapierLayout;
-use crate::config::BodyKindPolicy;
+use crate::config::{BodyKindPolicy, RapierLayoutConfig};
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::layout::LayoutExtras;
 use crate::world::bindings::ColliderSpec;
@@ -39,98 +39,25 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         frame_dt: f32,
     ) -> bool {
         self.drives.clear();
+        let Some(world) = self.world.as_mut() else {
+            return false;
+        };
+        let mut pass = SyncPass {
+            world,
+            drives: &mut self.drives,
+            config: &self.config,
+            frame_dt,
+            sweeps: 0,
+        };
         let check_drags = !extras.dragging.is_empty();
         let mut disturbed = false;
-        let mut sweeps = 0_usize;
-        for (i, node) in scene.nodes.iter().enumerate() {
-            let m = self.matching.matches()[i];
+        for (node, &m) in scene.nodes.iter().zip(self.matching.matches()) {
             if m.slot == NO_SLOT {
                 continue;
             }
             let dragging = m.valid && check_drags && extras.dragging.contains(&node.id);
-            disturbed |= self.sync_node(node, m, dragging, frame_dt, &mut sweeps);
+            disturbed |= pass.node(node, m, dragging);
         }
-        disturbed
-    }
-
-    /// Syncs one matched node; returns whether it disturbed the layout.
-    fn sync_node(
-        &mut self,
-        node: &CanvasNode<N>,
-        m: NodeMatch,
-        dragging: bool,
-        frame_dt: f32,
-        sweeps: &mut usize,
-    ) -> bool {
-        let s = m.slot as usize;
-        let desired = desired_type(self.config.body_kind_policy, m.valid, m.pinned, dragging);
-        let radius = radius_of(&self.config, node);
-        let density = self.config.material.density;
-        let max_speed = self.config.max_speed;
-        let Some(world) = self.world.as_mut() else {
-            return false;
-        };
-        let mut disturbed = false;
-        if m.valid {
-            disturbed |= sync_radius(world, s, radius, density);
-        }
-        let before = *world.host_at(s);
-        let host = node.position;
-        if before.synced
-            && desired == Some(RigidBodyType::Dynamic)
-            && !dragging
-            && before.told == host
-        {
-            // A free body the host left where it was told: nothing to sync, and no need
-            // to touch the body at all (the common case at rest).
-            world.set_anchor_at(s, host);
-            return disturbed;
-        }
-        // NOTE: read first: a mutable access marks the body as modified for rapier,
-        // which then re-processes it (and may wake it) at the next step.
-        let body = world.body_at(s);
-        let current = body.body_type();
-        let body_pos = Point2D::new(body.translation().x, body.translation().y);
-        match desired {
-            None => {
-                freeze(world, s, current, body_pos);
-                return disturbed;
-            }
-            Some(RigidBodyType::Dynamic) => {
-                disturbed |= free(world, s, current, body_pos, host);
-            }
-            Some(kind) => {
-                // Held: the body takes `kind` and goes to the host's position, at once
-                // for a fixed body, over the substeps for a kinematic one.
-                disturbed |= flip_to(world, s, current, kind);
-                if body_pos != host {
-                    wake_in_path(world, s, body_pos, host, sweeps);
-                    if kind == RigidBodyType::Fixed {
-                        world
-                            .body_at_mut(s)
-                            .set_translation(Vector::new(host.x, host.y), true);
-                    } else {
-                        self.drives.push(Drive {
-                            slot: m.slot,
-                            from: body_pos,
-                            to: host,
-                        });
-                    }
-                    disturbed = true;
-                }
-            }
-        }
-        world.set_anchor_at(s, host);
-        let sync = world.host_at_mut(s);
-        sync.fresh = false;
-        sync.pinned = m.pinned;
-        sync.told = host;
-        if dragging {
-            track_drag(sync, host, before.dragging, frame_dt, max_speed);
-            disturbed = true;
-        }
-        sync.dragging = dragging;
-        sync.synced = desired == Some(RigidBodyType::Dynamic) && !dragging;
         disturbed
     }
 
@@ -146,6 +73,108 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         }
         self.gravity = gravity;
         disturbed
+    }
+}
+
+/// One call's sync.
+struct SyncPass<'a, N> {
+    world: &'a mut RapierSceneWorld<N>,
+    drives: &'a mut Vec<Drive>,
+    config: &'a RapierLayoutConfig,
+    /// The frame's real elapsed time, which drag speeds are measured against.
+    frame_dt: f32,
+    /// Host moves of kinematic and fixed bodies so far (see [`SyncPass::wake_in_path`]).
+    sweeps: usize,
+}
+
+impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
+    /// Syncs one matched node; returns whether it disturbed the layout.
+    // NOTE: inlined into the loop over every node, where a call per node would cost a
+    // resting layout a fifth of its step.
+    #[inline(always)]
+    fn node(&mut self, node: &CanvasNode<N>, m: NodeMatch, dragging: bool) -> bool {
+        let s = m.slot as usize;
+        let desired = desired_type(self.config.body_kind_policy, m.valid, m.pinned, dragging);
+        let mut disturbed = false;
+        if m.valid {
+            let radius = radius_of(self.config, node);
+            disturbed |= sync_radius(self.world, s, radius, self.config.material.density);
+        }
+        let host = node.position;
+        let sync = self.world.host_at(s);
+        if sync.synced && desired == Some(RigidBodyType::Dynamic) && !dragging && sync.told == host
+        {
+            // A free body the host left where it was told: nothing to sync, and no need
+            // to touch the body at all (the common case at rest).
+            self.world.set_anchor_at(s, host);
+            return disturbed;
+        }
+        let was_dragging = sync.dragging;
+        // NOTE: read first: a mutable access marks the body as modified for rapier,
+        // which then re-processes it (and may wake it) at the next step.
+        let body = self.world.body_at(s);
+        let current = body.body_type();
+        let body_pos = Point2D::new(body.translation().x, body.translation().y);
+        match desired {
+            None => {
+                freeze(self.world, s, current, body_pos);
+                return disturbed;
+            }
+            Some(RigidBodyType::Dynamic) => {
+                disturbed |= free(self.world, s, current, body_pos, host);
+            }
+            Some(kind) => {
+                // Held: the body takes `kind` and goes to the host's position, at once
+                // for a fixed body, over the substeps for a kinematic one.
+                disturbed |= flip_to(self.world, s, current, kind);
+                if body_pos != host {
+                    self.wake_in_path(s, body_pos, host);
+                    if kind == RigidBodyType::Fixed {
+                        self.world
+                            .body_at_mut(s)
+                            .set_translation(Vector::new(host.x, host.y), true);
+                    } else {
+                        self.drives.push(Drive {
+                            slot: m.slot,
+                            from: body_pos,
+                            to: host,
+                        });
+                    }
+                    disturbed = true;
+                }
+            }
+        }
+        self.world.set_anchor_at(s, host);
+        let sync = self.world.host_at_mut(s);
+        sync.fresh = false;
+        sync.pinned = m.pinned;
+        sync.told = host;
+        if dragging {
+            track_drag(
+                sync,
+                host,
+                was_dragging,
+                self.frame_dt,
+                self.config.max_speed,
+            );
+            disturbed = true;
+        }
+        sync.dragging = dragging;
+        sync.synced = desired == Some(RigidBodyType::Dynamic) && !dragging;
+        disturbed
+    }
+
+    /// Wakes the sleeping bodies in the path of the held body in `s` moving from `from`
+    /// to `to`: rapier does not wake a sleeping body that a kinematic or fixed body is
+    /// moved into. Past [`MAX_SWEEPS`] moves in one call, one pass wakes every body
+    /// instead.
+    fn wake_in_path(&mut self, s: usize, from: Point2D<f32>, to: Point2D<f32>) {
+        self.sweeps += 1;
+        if self.sweeps <= MAX_SWEEPS {
+            self.world.wake_bodies_near_sweep(s, from, to);
+        } else if self.sweeps == MAX_SWEEPS + 1 {
+            self.world.wake_dynamic_bodies();
+        }
     }
 }
 
@@ -246,24 +275,6 @@ fn flip_to<N: Clone + Eq + Hash>(
     body.set_body_type(kind, true);
     body.set_linvel(Vector::ZERO, true);
     true
-}
-
-/// Wakes the sleeping bodies in the path of the held body in `s` moving from `from` to
-/// `to`: rapier does not wake a sleeping body that a kinematic or fixed body is moved
-/// into. Past [`MAX_SWEEPS`] moves in one call, one pass wakes every body instead.
-fn wake_in_path<N: Clone + Eq + Hash>(
-    world: &mut RapierSceneWorld<N>,
-    s: usize,
-    from: Point2D<f32>,
-    to: Point2D<f32>,
-    sweeps: &mut usize,
-) {
-    *sweeps += 1;
-    if *sweeps <= MAX_SWEEPS {
-        world.wake_bodies_near_sweep(s, from, to);
-    } else if *sweeps == MAX_SWEEPS + 1 {
-        world.wake_dynamic_bodies();
-    }
 }
 
 /// Whether the host moved a free node: its position differs from the one it was told

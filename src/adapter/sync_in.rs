@@ -94,22 +94,24 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
     #[inline(always)]
     fn node(&mut self, node: &CanvasNode<N>, m: NodeMatch, dragging: bool) -> bool {
         let s = m.slot as usize;
-        let desired = desired_type(self.config.body_kind_policy, m.valid, m.pinned, dragging);
+        let policy = self.config.body_kind_policy;
         let mut disturbed = false;
         if m.valid {
             let radius = radius_of(self.config, node);
             disturbed |= sync_radius(self.world, s, radius, self.config.material.density);
         }
         let host = node.position;
-        let sync = self.world.host_at(s);
-        if sync.synced && desired == Some(RigidBodyType::Dynamic) && !dragging && sync.told == host
-        {
+        let (sync, anchor) = self.world.host_and_anchor_mut(s);
+        // What `desired_type` makes dynamic, checked first for the common case.
+        let dynamic = m.valid && !m.pinned && !dragging && policy != BodyKindPolicy::AllKinematic;
+        if dynamic && sync.synced && sync.told == host {
             // A free body the host left where it was told: nothing to sync, and no need
             // to touch the body at all (the common case at rest).
-            self.world.set_anchor_at(s, host);
+            *anchor = host;
             return disturbed;
         }
         let was_dragging = sync.dragging;
+        let desired = desired_type(policy, m.valid, m.pinned, dragging);
         // NOTE: read first: a mutable access marks the body as modified for rapier,
         // which then re-processes it (and may wake it) at the next step.
         let body = self.world.body_at(s);

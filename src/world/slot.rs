@@ -100,6 +100,16 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         &mut self.slots[slot].host
     }
 
+    /// The adapter's sync state and the anchor of the node in `slot`, to update both
+    /// with one lookup (the per-node path of a resting layout).
+    pub(crate) fn host_and_anchor_mut(
+        &mut self,
+        slot: usize,
+    ) -> (&mut HostSync, &mut Point2D<f32>) {
+        let slot = &mut self.slots[slot];
+        (&mut slot.host, &mut slot.anchor)
+    }
+
     /// The anchor of the node in `slot`: where `read_positions` measures from.
     pub(crate) fn anchor_at(&self, slot: usize) -> Point2D<f32> {
         self.slots[slot].anchor

@@ -1,6 +1,10 @@
 //! Random host sessions (nodes and edges coming and going, pins, drags, throws, host
 //! moves, bad values, odd frame times) with an invariant checker after every call, and
-//! two layouts fed the same session compared bit for bit.
+//! two layouts fed the same session compared bit for bit. Short sessions over every
+//! configuration; long ones (hundreds of calls, drags that outlive edits and pin
+//! toggles, nodes dragged as they are added, grabs of flying nodes, frame times mixing
+//! tiny and capped ones, runs to rest and the halted world after it) under the default
+//! and the force-directed configuration.
 
 mod common;
 
@@ -9,7 +13,7 @@ use std::collections::{HashMap, HashSet};
 use common::*;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
-    CanvasSceneInput, DeltaMap, EdgeJoint, RapierLayout, RapierLayoutConfig, TopologyUpdate,
+    CanvasSceneInput, DeltaMap, EdgeJoint, Layout, RapierLayoutConfig, TopologyUpdate,
 };
 use proptest::prelude::*;
 
@@ -21,6 +25,8 @@ type DeltaBits = Vec<(u32, u32, u32)>;
 #[derive(Clone, Debug)]
 enum Action {
     AddNode(u32, f32, f32),
+    /// A node added under the pointer: dragged from its first call.
+    AddDragged(u32, f32, f32),
     RemoveNode(u32),
     AddEdge(u32, u32),
     RemoveEdge(usize),
@@ -31,6 +37,10 @@ enum Action {
     DragEnd(u32),
     HostMove(u32, f32, f32),
     Poison(u32),
+    /// A quick drag and release: three calls moving the node by the vector each.
+    Throw(u32, f32, f32),
+    /// Calls at 1/60 s until the layout rests (at most 600).
+    Settle,
     Step(f32),
 }
 
@@ -41,6 +51,9 @@ fn coordinate() -> impl Strategy<Value = f32> {
 fn frame_time() -> impl Strategy<Value = f32> {
     prop_oneof![
         6 => Just(FRAME),
+        2 => Just(1.0_f32 / 144.0),
+        1 => Just(1.0_f32 / 30.0),
+        1 => Just(0.5_f32),
         2 => 0.0_f32..0.3,
         1 => Just(0.0_f32),
         1 => Just(-1.0_f32),
@@ -66,6 +79,26 @@ fn action() -> impl Strategy<Value = Action> {
         1 => (id.clone(), coordinate(), coordinate()).prop_map(|(i, x, y)| Action::HostMove(i, x, y)),
         1 => id.clone().prop_map(Action::Poison),
         6 => frame_time().prop_map(Action::Step),
+    ]
+}
+
+/// The actions of a long session: fewer bad values, more drags, throws and grabs.
+fn long_action() -> impl Strategy<Value = Action> {
+    let id = 0..IDS;
+    prop_oneof![
+        3 => (id.clone(), coordinate(), coordinate()).prop_map(|(i, x, y)| Action::AddNode(i, x, y)),
+        2 => (id.clone(), coordinate(), coordinate()).prop_map(|(i, x, y)| Action::AddDragged(i, x, y)),
+        2 => id.clone().prop_map(Action::RemoveNode),
+        3 => (id.clone(), id.clone()).prop_map(|(a, b)| Action::AddEdge(a, b)),
+        1 => (0usize..40).prop_map(Action::RemoveEdge),
+        2 => id.clone().prop_map(Action::Pin),
+        2 => id.clone().prop_map(Action::Unpin),
+        2 => id.clone().prop_map(Action::DragStart),
+        1 => id.clone().prop_map(Action::DragEnd),
+        2 => (id.clone(), -80.0_f32..80.0, -80.0_f32..80.0).prop_map(|(i, x, y)| Action::Throw(i, x, y)),
+        1 => (id.clone(), -200.0_f32..200.0, -200.0_f32..200.0).prop_map(|(i, x, y)| Action::HostMove(i, x, y)),
+        1 => Just(Action::Settle),
+        12 => frame_time().prop_map(Action::Step),
     ]
 }
 
@@ -115,6 +148,12 @@ fn apply_action(host: &mut Host<u32>, action: &Action) {
                 host.scene.nodes.push(node(id, x, y));
             }
         }
+        Action::AddDragged(id, x, y) => {
+            if !has(host, id) {
+                host.scene.nodes.push(node(id, x, y));
+                host.extras.dragging.insert(id);
+            }
+        }
         Action::RemoveNode(id) => {
             host.scene.nodes.retain(|n| n.id != id);
             host.scene
@@ -161,7 +200,16 @@ fn apply_action(host: &mut Host<u32>, action: &Action) {
                 host.set_pos(&id, Point2D::new(f32::NAN, 0.0));
             }
         }
-        Action::Step(_) => {}
+        Action::Throw(..) | Action::Settle | Action::Step(_) => {}
+    }
+}
+
+/// Every dragged node moves by (3, −2) per call, as a pointer held in motion would.
+fn move_dragged(host: &mut Host<u32>) {
+    for n in &mut host.scene.nodes {
+        if host.extras.dragging.contains(&n.id) && n.position.x.is_finite() {
+            n.position += Vector2D::new(3.0, -2.0);
+        }
     }
 }
 
@@ -314,9 +362,23 @@ fn check_joints(host: &Host<u32>, before: &CanvasSceneInput<u32>) -> Result<(), 
     Ok(())
 }
 
+/// One call of `dt` seconds, checked, its deltas logged.
+fn call(host: &mut Host<u32>, dt: f32, log: &mut Vec<DeltaBits>) -> Result<(), TestCaseError> {
+    move_dragged(host);
+    let before = host.scene.clone();
+    let deltas = host.frame(dt);
+    check(host, &before, &deltas)?;
+    let mut row: Vec<(u32, u32, u32)> = deltas
+        .iter()
+        .map(|(id, d)| (*id, d.x.to_bits(), d.y.to_bits()))
+        .collect();
+    row.sort_unstable();
+    log.push(row);
+    Ok(())
+}
+
 fn run(config: &RapierLayoutConfig, actions: &[Action]) -> Result<Vec<DeltaBits>, TestCaseError> {
     let mut host = Host::new(CanvasSceneInput::default(), config.clone());
-    host.layout = RapierLayout::new(config.clone());
     let mut log = Vec::new();
     let mut since_poison = 0;
     for action in actions {
@@ -328,19 +390,48 @@ fn run(config: &RapierLayoutConfig, actions: &[Action]) -> Result<Vec<DeltaBits>
         if since_poison == 6 {
             heal(&mut host.scene);
         }
-        if let Action::Step(dt) = *action {
-            let before = host.scene.clone();
-            let deltas = host.frame(dt);
-            check(&host, &before, &deltas)?;
-            let mut row: Vec<(u32, u32, u32)> = deltas
-                .iter()
-                .map(|(id, d)| (*id, d.x.to_bits(), d.y.to_bits()))
-                .collect();
-            row.sort_unstable();
-            log.push(row);
+        match *action {
+            Action::Step(dt) => call(&mut host, dt, &mut log)?,
+            Action::Throw(id, dx, dy) => {
+                if !host
+                    .scene
+                    .nodes
+                    .iter()
+                    .any(|n| n.id == id && n.position.x.is_finite())
+                {
+                    continue;
+                }
+                host.extras.dragging.insert(id);
+                for _ in 0..3 {
+                    let p = host.pos(&id);
+                    host.set_pos(&id, p + Vector2D::new(dx, dy));
+                    call(&mut host, FRAME, &mut log)?;
+                }
+                host.extras.dragging.remove(&id);
+                call(&mut host, FRAME, &mut log)?;
+            }
+            Action::Settle => {
+                for _ in 0..600 {
+                    call(&mut host, FRAME, &mut log)?;
+                    if host.layout.is_converged(&host.state) {
+                        break;
+                    }
+                }
+            }
+            _ => {}
         }
     }
     Ok(log)
+}
+
+/// The configurations of the long sessions: the default and the force-directed one,
+/// whole.
+fn long_config() -> impl Strategy<Value = RapierLayoutConfig> {
+    prop_oneof![
+        Just(RapierLayoutConfig::default()),
+        Just(RapierLayoutConfig::force_directed()),
+        Just(RapierLayoutConfig::force_directed_fast()),
+    ]
 }
 
 proptest! {
@@ -356,6 +447,26 @@ proptest! {
     fn random_sessions_keep_the_invariants_and_replay_bit_for_bit(
         config in config(),
         actions in prop::collection::vec(action(), 1..80),
+    ) {
+        let first = run(&config, &actions)?;
+        let second = run(&config, &actions)?;
+        prop_assert_eq!(first, second, "two layouts fed the same session differ");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 96,
+        failure_persistence: Some(Box::new(
+            proptest::test_runner::FileFailurePersistence::Direct("proptest-regressions/long_sessions.txt"),
+        )),
+        ..ProptestConfig::default()
+    })]
+
+    #[test]
+    fn long_sessions_keep_the_invariants_and_replay_bit_for_bit(
+        config in long_config(),
+        actions in prop::collection::vec(long_action(), 200..600),
     ) {
         let first = run(&config, &actions)?;
         let second = run(&config, &actions)?;

@@ -57,9 +57,22 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             Some(collector) => collector,
             None => &(),
         };
+        // NOTE: rapier keeps a body's "moving fast" CCD flag when the body stops being
+        // dynamic (a drag start), and its CCD pass then sweeps that kinematic body against
+        // the fixed colliders and clamps its commanded motion at the first one it would
+        // touch. While such a body is awake, steps run without CCD.
+        let stale_ccd = self.islands.active_bodies().any(|handle| {
+            self.bodies
+                .get(handle)
+                .is_some_and(|body| !body.is_dynamic() && body.is_ccd_active())
+        });
+        let mut params = self.params;
+        if stale_ccd {
+            params.max_ccd_substeps = 0;
+        }
         self.pipeline.step(
             gravity,
-            &self.params,
+            &params,
             &mut self.islands,
             &mut self.broad_phase,
             &mut self.narrow_phase,

@@ -149,7 +149,7 @@ pub use forces::many_body::Repulsion;
 pub use input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
 pub use input::scene_file::{SceneFile, SceneFileNode};
 pub use input::topology::topology_hash;
-pub use input::validation::LayoutError;
+pub use input::validation::{LayoutError, MAX_COORDINATE};
 pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeSet};
 pub use timestep::{StepPlan, DEFAULT_TIMESTEP, MIN_TIMESTEP};
 pub use world::bindings::{

@@ -54,8 +54,11 @@ fn try_step_names_the_bad_element_and_changes_nothing() {
     dup.nodes.push(node(0, 1.0, 1.0));
     let mut dangling = good.clone();
     dangling.edges.push(edge(2, 77));
+    let mut far = good.clone();
+    far.nodes[1].position.y = -2.0e9;
     let cases = [
         (nan, "node 1 has a non-finite position"),
+        (far, "node 1 has a position (300, -2000000000) beyond ±1e9"),
         (radius, "node 2 has an invalid radius inf"),
         (negative, "node 2 has an invalid radius -1"),
         (

@@ -9,6 +9,12 @@ use euclid::default::Point2D;
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::layout::IdHasher;
 
+/// The largest coordinate a node's position may have, in world units (either sign).
+/// Beyond it an `f32` resolves positions to more than 64 units, rapier's contacts and
+/// sleep thresholds mean nothing, and the differences and squares its solver takes
+/// overflow towards infinity near `f32::MAX`: such a position is bad input, like a NaN.
+pub const MAX_COORDINATE: f32 = 1.0e9;
+
 /// Bad input rejected by [`RapierLayout::try_step`](crate::RapierLayout::try_step). A
 /// rejected call changes nothing: not the world, not the state, not the counters.
 #[derive(Clone, Debug, PartialEq)]
@@ -16,6 +22,13 @@ use crate::layout::IdHasher;
 pub enum LayoutError<N> {
     /// A node's position has a NaN or infinite coordinate.
     NonFinitePosition {
+        /// The node.
+        node: N,
+        /// The position the host gave.
+        position: Point2D<f32>,
+    },
+    /// A node's position has a coordinate beyond ±[`MAX_COORDINATE`].
+    PositionOutOfRange {
         /// The node.
         node: N,
         /// The position the host gave.
@@ -58,6 +71,11 @@ impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
                 "node {node:?} has a non-finite position ({}, {})",
                 position.x, position.y
             ),
+            LayoutError::PositionOutOfRange { node, position } => write!(
+                f,
+                "node {node:?} has a position ({}, {}) beyond ±{MAX_COORDINATE:e}",
+                position.x, position.y
+            ),
             LayoutError::InvalidRadius { node, radius } => write!(
                 f,
                 "node {node:?} has an invalid radius {radius} (must be finite and >= 0)"
@@ -85,13 +103,15 @@ impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
 
 impl<N: fmt::Debug> std::error::Error for LayoutError<N> {}
 
-/// Whether the layout can use this node's values: a finite position and a finite,
-/// non-negative radius (0 means the default radius).
+/// Whether the layout can use this node's values: a position within ±[`MAX_COORDINATE`]
+/// and a finite, non-negative radius (0 means the default radius).
 pub(crate) fn node_is_valid<N>(node: &CanvasNode<N>) -> bool {
-    node.position.x.is_finite()
-        && node.position.y.is_finite()
-        && node.radius.is_finite()
-        && node.radius >= 0.0
+    position_in_range(node.position) && node.radius.is_finite() && node.radius >= 0.0
+}
+
+/// Whether both coordinates are within ±[`MAX_COORDINATE`] (and so finite).
+pub(crate) fn position_in_range(p: Point2D<f32>) -> bool {
+    p.x.abs() <= MAX_COORDINATE && p.y.abs() <= MAX_COORDINATE
 }
 
 /// The first problem in `scene`, in scene order: nodes first, then edges.
@@ -103,6 +123,12 @@ pub(crate) fn validate<N: Clone + Eq + Hash>(
     for (i, node) in scene.nodes.iter().enumerate() {
         if !(node.position.x.is_finite() && node.position.y.is_finite()) {
             return Err(LayoutError::NonFinitePosition {
+                node: node.id.clone(),
+                position: node.position,
+            });
+        }
+        if !position_in_range(node.position) {
+            return Err(LayoutError::PositionOutOfRange {
                 node: node.id.clone(),
                 position: node.position,
             });

@@ -135,3 +135,4 @@ pub fn positions<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> HashMap<N
         .map(|n| (n.id.clone(), n.position))
         .collect()
 }
+pub mod session;

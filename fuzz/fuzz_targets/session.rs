@@ -1,0 +1,122 @@
+//! A host session decoded from the fuzzer's bytes: a configuration, then host actions
+//! (nodes and edges added and removed, pins, drags, throws, host moves, bad values, any
+//! frame time, runs to rest), with the invariants of `tests/sessions.rs` checked after
+//! every call and a second layout fed the same session compared bit for bit. Any
+//! broken invariant or panic is a finding.
+#![no_main]
+
+use arbitrary::{Result, Unstructured};
+use graph_canvas_layout::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, TopologyUpdate};
+use libfuzzer_sys::fuzz_target;
+
+#[path = "../../tests/common/mod.rs"]
+mod common;
+
+use common::session::{run, Action};
+use common::FRAME;
+
+/// Ids the session draws from: few, so actions meet the same nodes again.
+const IDS: u32 = 12;
+/// The longest session one input decodes to.
+const MAX_ACTIONS: usize = 400;
+
+fn config(u: &mut Unstructured) -> Result<RapierLayoutConfig> {
+    let base = match u.int_in_range(0..=2)? {
+        0 => RapierLayoutConfig::default(),
+        1 => RapierLayoutConfig::force_directed(),
+        _ => RapierLayoutConfig::force_directed_fast(),
+    };
+    let edge_joint = match u.int_in_range(0..=4)? {
+        0 => EdgeJoint::Rope {
+            max_length: 120.0,
+            stiffness: 1e4,
+        },
+        1 => EdgeJoint::Distance { length: 80.0 },
+        2 => EdgeJoint::None,
+        _ => base.edge_joint,
+    };
+    let body_kind_policy = match u.int_in_range(0..=5)? {
+        0 => BodyKindPolicy::PinnedKinematic,
+        1 => BodyKindPolicy::AllKinematic,
+        _ => BodyKindPolicy::PinnedStatic,
+    };
+    Ok(RapierLayoutConfig {
+        edge_joint,
+        body_kind_policy,
+        topology_update: if u.ratio(1, 4)? {
+            TopologyUpdate::Rebuild
+        } else {
+            TopologyUpdate::Incremental
+        },
+        collisions: if u.ratio(1, 4)? {
+            !base.collisions
+        } else {
+            base.collisions
+        },
+        contact_events: u.ratio(1, 4)?,
+        ..base
+    })
+}
+
+/// A coordinate: mostly on the canvas, sometimes anything an `f32` holds.
+fn coordinate(u: &mut Unstructured) -> Result<f32> {
+    Ok(match u.int_in_range(0..=9)? {
+        0 => f32::from_bits(u.arbitrary()?),
+        1 => 0.0,
+        2 => u.int_in_range(-100_000..=100_000)? as f32,
+        _ => u.int_in_range(-400..=400)? as f32,
+    })
+}
+
+/// A frame time: mostly ordinary ones, sometimes anything an `f32` holds.
+fn frame_time(u: &mut Unstructured) -> Result<f32> {
+    Ok(match u.int_in_range(0..=9)? {
+        0 => f32::from_bits(u.arbitrary()?),
+        1 => 1.0 / 144.0,
+        2 => 1.0 / 30.0,
+        3 => 0.5,
+        4 => 0.0,
+        _ => FRAME,
+    })
+}
+
+fn action(u: &mut Unstructured) -> Result<Action> {
+    let id = |u: &mut Unstructured| u.int_in_range(0..=IDS - 1);
+    Ok(match u.int_in_range(0..=15)? {
+        0 => Action::AddNode(id(u)?, coordinate(u)?, coordinate(u)?),
+        1 => Action::AddDragged(id(u)?, coordinate(u)?, coordinate(u)?),
+        2 => Action::RemoveNode(id(u)?),
+        3 => Action::AddEdge(id(u)?, id(u)?),
+        4 => Action::RemoveEdge(u.int_in_range(0..=40)?),
+        5 => Action::Pin(id(u)?),
+        6 => Action::Unpin(id(u)?),
+        7 => Action::DragStart(id(u)?),
+        8 => Action::DragTo(id(u)?, coordinate(u)?, coordinate(u)?),
+        9 => Action::DragEnd(id(u)?),
+        10 => Action::HostMove(id(u)?, coordinate(u)?, coordinate(u)?),
+        11 => Action::Poison(id(u)?),
+        12 => Action::Throw(id(u)?, coordinate(u)?, coordinate(u)?),
+        13 if u.ratio(1, 8)? => Action::Settle,
+        _ => Action::Step(frame_time(u)?),
+    })
+}
+
+fuzz_target!(|data: &[u8]| {
+    let mut u = Unstructured::new(data);
+    let Ok(config) = config(&mut u) else {
+        return;
+    };
+    let mut actions = Vec::new();
+    while !u.is_empty() && actions.len() < MAX_ACTIONS {
+        match action(&mut u) {
+            Ok(a) => actions.push(a),
+            Err(_) => break,
+        }
+    }
+    let first = run(&config, &actions);
+    let second = run(&config, &actions);
+    match (first, second) {
+        (Ok(a), Ok(b)) => assert!(a == b, "two layouts fed the same session differ"),
+        (Err(e), _) | (_, Err(e)) => panic!("{e}\nconfig: {config:?}\nactions: {actions:?}"),
+    }
+});

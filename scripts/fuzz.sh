@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Runs the host-session fuzz target (fuzz/fuzz_targets/session.rs) under libFuzzer with
+# cargo-fuzz on the stable toolchain, starting from the committed corpus.
+#
+#   scripts/fuzz.sh [SECONDS]   # default 60; findings land in fuzz/artifacts/session/
+#
+# Reproduce a finding with `cd fuzz && RUSTC_BOOTSTRAP=1 cargo fuzz run session FILE`.
+set -euo pipefail
+cd "$(dirname "$0")/../fuzz"
+command -v cargo-fuzz >/dev/null || cargo install cargo-fuzz --locked
+seconds=${1:-60}
+# cargo-fuzz passes nightly-only flags to rustc; RUSTC_BOOTSTRAP lets stable take them.
+RUSTC_BOOTSTRAP=1 cargo fuzz run session corpus/session -- \
+    -max_total_time="$seconds" -rss_limit_mb=4096 -print_final_stats=1

@@ -1,0 +1,347 @@
+//! The host session grammar shared by the random-session tests and the fuzz target:
+//! host actions, how a host applies them, and the invariants checked after every call.
+//! Each check returns the first broken invariant as a message.
+#![allow(dead_code)]
+
+use std::collections::{HashMap, HashSet};
+
+use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
+use graph_canvas_layout::{
+    CanvasSceneInput, DeltaMap, EdgeJoint, Layout, RapierLayoutConfig, MAX_COORDINATE,
+};
+
+use super::{edge, node, Host, FRAME};
+
+/// One call's deltas as `(id, x bits, y bits)`, sorted by id.
+pub type DeltaBits = Vec<(u32, u32, u32)>;
+
+/// `Err` with the message unless `cond` holds.
+macro_rules! ensure {
+    ($cond:expr, $($msg:tt)+) => {
+        let holds: bool = $cond;
+        if !holds {
+            return Err(format!($($msg)+));
+        }
+    };
+}
+
+/// `Err` with both values and the message unless they are equal.
+macro_rules! ensure_eq {
+    ($a:expr, $b:expr) => {
+        ensure_eq!($a, $b, "")
+    };
+    ($a:expr, $b:expr, $($msg:tt)+) => {
+        let (a, b) = (&$a, &$b);
+        if a != b {
+            return Err(format!("{:?} != {:?}: {}", a, b, format!($($msg)+)));
+        }
+    };
+}
+
+#[derive(Clone, Debug)]
+pub enum Action {
+    AddNode(u32, f32, f32),
+    /// A node added under the pointer: dragged from its first call.
+    AddDragged(u32, f32, f32),
+    RemoveNode(u32),
+    AddEdge(u32, u32),
+    RemoveEdge(usize),
+    Pin(u32),
+    Unpin(u32),
+    DragStart(u32),
+    DragTo(u32, f32, f32),
+    DragEnd(u32),
+    HostMove(u32, f32, f32),
+    Poison(u32),
+    /// A quick drag and release: three calls moving the node by the vector each.
+    Throw(u32, f32, f32),
+    /// Calls at 1/60 s until the layout rests (at most 600).
+    Settle,
+    Step(f32),
+}
+
+/// Applies a host action to the scene (not a step).
+pub fn apply_action(host: &mut Host<u32>, action: &Action) {
+    let has = |host: &Host<u32>, id: u32| host.scene.nodes.iter().any(|n| n.id == id);
+    match *action {
+        Action::AddNode(id, x, y) => {
+            if !has(host, id) {
+                host.scene.nodes.push(node(id, x, y));
+            }
+        }
+        Action::AddDragged(id, x, y) => {
+            if !has(host, id) {
+                host.scene.nodes.push(node(id, x, y));
+                host.extras.dragging.insert(id);
+            }
+        }
+        Action::RemoveNode(id) => {
+            host.scene.nodes.retain(|n| n.id != id);
+            host.scene
+                .edges
+                .retain(|e| e.source != id && e.target != id);
+        }
+        Action::AddEdge(a, b) => {
+            if has(host, a) && has(host, b) {
+                host.scene.edges.push(edge(a, b));
+            }
+        }
+        Action::RemoveEdge(i) => {
+            if i < host.scene.edges.len() {
+                host.scene.edges.remove(i);
+            }
+        }
+        Action::Pin(id) => {
+            host.extras.pinned.insert(id);
+        }
+        Action::Unpin(id) => {
+            host.extras.pinned.remove(&id);
+        }
+        Action::DragStart(id) => {
+            host.extras.dragging.insert(id);
+        }
+        Action::DragTo(id, dx, dy) => {
+            if host.extras.dragging.contains(&id) && has(host, id) {
+                let p = host.pos(&id);
+                if p.x.is_finite() && p.y.is_finite() {
+                    host.set_pos(&id, p + Vector2D::new(dx, dy));
+                }
+            }
+        }
+        Action::DragEnd(id) => {
+            host.extras.dragging.remove(&id);
+        }
+        Action::HostMove(id, x, y) => {
+            if has(host, id) {
+                host.set_pos(&id, Point2D::new(x, y));
+            }
+        }
+        Action::Poison(id) => {
+            if has(host, id) {
+                host.set_pos(&id, Point2D::new(f32::NAN, 0.0));
+            }
+        }
+        Action::Throw(..) | Action::Settle | Action::Step(_) => {}
+    }
+}
+
+/// Every dragged node moves by (3, −2) per call, as a pointer held in motion would.
+pub fn move_dragged(host: &mut Host<u32>) {
+    for n in &mut host.scene.nodes {
+        if host.extras.dragging.contains(&n.id) && n.position.x.is_finite() {
+            n.position += Vector2D::new(3.0, -2.0);
+        }
+    }
+}
+
+/// Fixes any poisoned node some frames later, as a host would.
+pub fn heal(scene: &mut CanvasSceneInput<u32>) {
+    for n in &mut scene.nodes {
+        if !(n.position.x.abs() <= MAX_COORDINATE && n.position.y.abs() <= MAX_COORDINATE) {
+            n.position = Point2D::new(n.id as f32 * 10.0, 0.0);
+        }
+    }
+}
+
+/// The invariants a host relies on, checked after every call.
+pub fn check(
+    host: &Host<u32>,
+    before: &CanvasSceneInput<u32>,
+    deltas: &DeltaMap<u32>,
+) -> Result<(), String> {
+    // What the layout takes as a usable position.
+    let valid = |p: Point2D<f32>| p.x.abs() <= MAX_COORDINATE && p.y.abs() <= MAX_COORDINATE;
+    let ids: HashSet<u32> = before.nodes.iter().map(|n| n.id).collect();
+    for (id, d) in deltas {
+        ensure!(
+            d.x.is_finite() && d.y.is_finite(),
+            "node {id}: non-finite delta {d:?}"
+        );
+        ensure!(
+            ids.contains(id),
+            "delta for node {id}, which is not in the scene"
+        );
+        ensure!(
+            !host.extras.pinned.contains(id),
+            "delta for pinned node {id}: {d:?}"
+        );
+        ensure!(
+            !host.extras.dragging.contains(id),
+            "delta for dragged node {id}: {d:?}"
+        );
+        let p = before.nodes.iter().find(|n| n.id == *id).unwrap().position;
+        ensure!(
+            valid(p),
+            "delta {d:?} for node {id} whose position {p:?} is unusable"
+        );
+    }
+    let Some(world) = host.layout.world() else {
+        ensure!(before.nodes.is_empty(), "no world for a non-empty scene");
+        return Ok(());
+    };
+    // World and scene agree on the node set (nodes with usable values, plus bodies kept
+    // for nodes whose values are unusable right now).
+    for n in &before.nodes {
+        if valid(n.position) {
+            ensure!(
+                world.contains_node(&n.id),
+                "scene node {} has no body",
+                n.id
+            );
+        }
+    }
+    for id in world.node_ids() {
+        ensure!(ids.contains(id), "body for node {id}, which left the scene");
+    }
+    ensure_eq!(world.body_count(), world.node_ids().count());
+    check_joints(host, before)?;
+    for n in &host.scene.nodes {
+        if !valid(n.position) {
+            continue;
+        }
+        let w = world.get_position(&n.id).unwrap();
+        ensure!(valid(w), "node {}: body at {:?}", n.id, w);
+        if host.extras.dragging.contains(&n.id) || host.extras.pinned.contains(&n.id) {
+            ensure_eq!(
+                w,
+                n.position,
+                "held node {} is not where the host put it",
+                n.id
+            );
+        } else {
+            // Deltas sum to the world's positions: the host's position after applying
+            // them is the body's, up to rounding and the 1e-4 report threshold.
+            let scale = 1.0 + n.position.x.abs().max(n.position.y.abs());
+            let gap = (w - n.position).length();
+            ensure!(
+                gap <= 1e-3 + scale * 4.0 * f32::EPSILON,
+                "node {}: host {:?} vs body {:?} ({gap})",
+                n.id,
+                n.position,
+                w
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Every modelled edge has the joint the configuration gives it; with degree-scaled
+/// springs, the share its ends' current degrees give it, however the topology got there.
+pub fn check_joints(host: &Host<u32>, before: &CanvasSceneInput<u32>) -> Result<(), String> {
+    let world = host.layout.world().expect("a world");
+    let config = &host.layout.config;
+    let mut pairs: Vec<(u32, u32)> = before
+        .edges
+        .iter()
+        .filter(|e| e.source != e.target)
+        .filter(|e| world.contains_node(&e.source) && world.contains_node(&e.target))
+        .map(|e| (e.source.min(e.target), e.source.max(e.target)))
+        .collect();
+    pairs.sort_unstable();
+    pairs.dedup();
+    let mut degree: HashMap<u32, u32> = HashMap::new();
+    for &(a, b) in &pairs {
+        *degree.entry(a).or_default() += 1;
+        *degree.entry(b).or_default() += 1;
+    }
+    for &(a, b) in &pairs {
+        let expected = match config.edge_joint {
+            EdgeJoint::None => None,
+            EdgeJoint::Spring {
+                rest_length,
+                stiffness,
+                damping,
+            } if config.spring_degree_exponent > 0.0 => {
+                let share = (degree[&a].min(degree[&b]) as f32).powf(config.spring_degree_exponent);
+                Some(EdgeJoint::Spring {
+                    rest_length,
+                    stiffness: stiffness / share,
+                    damping: damping / share,
+                })
+            }
+            kind => Some(kind),
+        };
+        ensure_eq!(
+            world.edge_joint(&a, &b),
+            expected,
+            "edge {}-{} (degrees {}, {})",
+            a,
+            b,
+            degree[&a],
+            degree[&b]
+        );
+    }
+    ensure_eq!(
+        world.joint_count(),
+        if config.edge_joint == EdgeJoint::None {
+            0
+        } else {
+            pairs.len()
+        },
+        "joints for {} modelled edges",
+        pairs.len()
+    );
+    Ok(())
+}
+
+/// One call of `dt` seconds, checked, its deltas logged.
+pub fn call(host: &mut Host<u32>, dt: f32, log: &mut Vec<DeltaBits>) -> Result<(), String> {
+    move_dragged(host);
+    let before = host.scene.clone();
+    let deltas = host.frame(dt);
+    check(host, &before, &deltas)?;
+    let mut row: Vec<(u32, u32, u32)> = deltas
+        .iter()
+        .map(|(id, d)| (*id, d.x.to_bits(), d.y.to_bits()))
+        .collect();
+    row.sort_unstable();
+    log.push(row);
+    Ok(())
+}
+
+pub fn run(config: &RapierLayoutConfig, actions: &[Action]) -> Result<Vec<DeltaBits>, String> {
+    let mut host = Host::new(CanvasSceneInput::default(), config.clone());
+    let mut log = Vec::new();
+    let mut since_poison = 0;
+    for action in actions {
+        apply_action(&mut host, action);
+        since_poison += 1;
+        if matches!(action, Action::Poison(_)) {
+            since_poison = 0;
+        }
+        if since_poison == 6 {
+            heal(&mut host.scene);
+        }
+        match *action {
+            Action::Step(dt) => call(&mut host, dt, &mut log)?,
+            Action::Throw(id, dx, dy) => {
+                if !host
+                    .scene
+                    .nodes
+                    .iter()
+                    .any(|n| n.id == id && n.position.x.is_finite())
+                {
+                    continue;
+                }
+                host.extras.dragging.insert(id);
+                for _ in 0..3 {
+                    let p = host.pos(&id);
+                    host.set_pos(&id, p + Vector2D::new(dx, dy));
+                    call(&mut host, FRAME, &mut log)?;
+                }
+                host.extras.dragging.remove(&id);
+                call(&mut host, FRAME, &mut log)?;
+            }
+            Action::Settle => {
+                for _ in 0..600 {
+                    call(&mut host, FRAME, &mut log)?;
+                    if host.layout.is_converged(&host.state) {
+                        break;
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(log)
+}

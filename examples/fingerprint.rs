@@ -11,8 +11,12 @@ use std::hash::Hasher;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
     BodyKindPolicy, CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, EdgeJoint, Layout,
-    LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState, SceneFile, TopologyUpdate,
+    LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState, TopologyUpdate,
 };
+
+mod common;
+
+use common::load;
 
 const FRAME: f32 = 1.0 / 60.0;
 
@@ -56,14 +60,6 @@ impl Rng {
     fn range(&mut self, lo: f32, hi: f32) -> f32 {
         lo + (hi - lo) * (self.next() >> 40) as f32 / (1u64 << 24) as f32
     }
-}
-
-fn load(name: &str) -> CanvasSceneInput<u32> {
-    let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).expect("scene file");
-    serde_json::from_str::<SceneFile>(&text)
-        .expect("scene json")
-        .into_scene()
 }
 
 struct Session {

@@ -8,8 +8,8 @@
 //! `--leave-out`: one of `spring_exponent`, `spring_degree_exponent`, `link_bias`,
 //! `first_contact_heat`, `hot_contact_frequency`, `stretch_limit`, `accuracy` switched
 //! back to d3's plain setting or rapier's two iterations, as in the README's table); any
-//! shipped scene may be named (`n1000_e2500`, `n10000_e25000`). Overlaps and crossings are counted pairwise,
-//! so above 3,000 nodes or edges they are left out ("-"), as in the d3 script.
+//! shipped scene may be named (`n1000_e2500`, `n10000_e25000`). Crossings are counted
+//! pairwise, so above 3,000 edges they are left out ("-"), as in the d3 script.
 //!
 //! `--starts N` lays each scene out N times, from the file's positions and then from
 //! N − 1 copies jittered by up to half a unit (a fixed sequence, so runs repeat), and
@@ -33,7 +33,7 @@ const SCENES: [&str; 6] = [
 ];
 /// Frames after which a layout counts as not settling.
 const MAX_FRAMES: usize = 3000;
-/// Above this many nodes or edges, pairwise counts are left out.
+/// Above this many edges, crossings (counted pairwise) are left out.
 const PAIRWISE_LIMIT: usize = 3000;
 
 /// `GCL_TUNE="strength k c damping theta"` overrides the force-directed defaults, to explore.
@@ -65,6 +65,16 @@ struct Run {
     overlaps: Option<usize>,
     crossings: Option<usize>,
     micros_per_step: f64,
+    /// Step times in microseconds, sorted.
+    step_micros: Vec<f64>,
+}
+
+impl Run {
+    /// The `q` quantile of the step times, in milliseconds.
+    fn step_ms(&self, q: f64) -> f64 {
+        let i = ((self.step_micros.len() as f64 - 1.0) * q).round() as usize;
+        self.step_micros.get(i).copied().unwrap_or(0.0) / 1e3
+    }
 }
 
 /// `--leave-out SETTING`: one departure of `force_directed()` from d3-force switched
@@ -82,9 +92,14 @@ fn leave_out(config: &mut RapierLayoutConfig, setting: &str) {
         "hot_contact_frequency" => cooling.hot_contact_frequency = None,
         "stretch_limit" => cooling.stretch_limit = None,
         "accuracy" => config.accuracy = Accuracy::Balanced,
+        "contact_model" => config.contact_model = graph_canvas_layout::ContactModel::Rapier,
+        "spring_model" => config.spring_model = graph_canvas_layout::SpringModel::Joints,
+        "reheat_hops" => cooling.reheat_hops = None,
+        "flight_damping" => config.flight_damping = None,
         other => panic!(
             "--leave-out takes spring_exponent, spring_degree_exponent, link_bias, \
-             first_contact_heat, hot_contact_frequency, stretch_limit or accuracy, not {other:?}"
+             first_contact_heat, hot_contact_frequency, stretch_limit, accuracy, contact_model, \
+             spring_model, reheat_hops or flight_damping, not {other:?}"
         ),
     }
 }
@@ -97,8 +112,10 @@ fn run(mut scene: CanvasSceneInput<u32>, config: &RapierLayoutConfig) -> Run {
     let mut state = RapierLayoutState::default();
     let extras = LayoutExtras::default();
     let mut frames = 0;
+    let mut step_micros = Vec::new();
     let started = Instant::now();
     while !layout.is_converged(&state) && frames < MAX_FRAMES {
+        let step_started = Instant::now();
         let deltas = layout.step(
             &scene,
             &mut state,
@@ -106,18 +123,20 @@ fn run(mut scene: CanvasSceneInput<u32>, config: &RapierLayoutConfig) -> Run {
             &CanvasViewport::default(),
             &extras,
         );
+        step_micros.push(step_started.elapsed().as_secs_f64() * 1e6);
         scene.apply_deltas(&deltas);
         frames += 1;
     }
+    step_micros.sort_by(f64::total_cmp);
     let micros_per_step = started.elapsed().as_secs_f64() * 1e6 / frames.max(1) as f64;
     Run {
         frames,
         cv: quality::edge_length_cv(&scene).unwrap_or(0.0),
         mean_edge: quality::mean_edge_length(&scene).unwrap_or(0.0),
-        overlaps: (scene.nodes.len() <= PAIRWISE_LIMIT)
-            .then(|| quality::overlapping_pairs(&scene, default_radius, 0.5)),
+        overlaps: Some(quality::overlapping_pairs(&scene, default_radius, 0.5)),
         crossings: (scene.edges.len() <= PAIRWISE_LIMIT).then(|| quality::edge_crossings(&scene)),
         micros_per_step,
+        step_micros,
     }
 }
 
@@ -158,12 +177,23 @@ fn main() {
     while let Some(arg) = rest.next() {
         match arg.as_str() {
             "--fast" => {}
+            "--spring-forces" => config.spring_model = graph_canvas_layout::SpringModel::Forces,
+            "--disks" => config.contact_model = graph_canvas_layout::ContactModel::Disks,
             "--starts" => {
                 starts = rest
                     .next()
                     .and_then(|n| n.parse().ok())
                     .filter(|&n| n > 0)
                     .expect("--starts takes a positive count");
+            }
+            "--duration" => {
+                let seconds: f32 = rest
+                    .next()
+                    .and_then(|n| n.parse().ok())
+                    .expect("--duration takes seconds");
+                if let Some(cooling) = config.cooling.as_mut() {
+                    cooling.duration = seconds;
+                }
             }
             "--leave-out" => {
                 let setting = rest.next().expect("--leave-out takes a setting");
@@ -176,8 +206,8 @@ fn main() {
         names = SCENES.iter().map(|s| s.to_string()).collect();
     }
     if starts == 1 {
-        println!("| scene | nodes | edges | frames to settle | edge-length CV | mean edge | overlaps | crossings | µs per step |");
-        println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+        println!("| scene | nodes | edges | frames to settle | edge-length CV | mean edge | overlaps | crossings | µs per step | step ms p50 / p95 / max | s to rest |");
+        println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
     } else {
         println!("| scene | starts | frames to settle (min–max) | edge-length CV mean | CV min–max | overlaps (all starts) |");
         println!("| --- | ---: | ---: | ---: | ---: | ---: |");
@@ -201,7 +231,7 @@ fn main() {
         };
         if let [r] = runs.as_slice() {
             println!(
-                "| {name} | {nodes} | {edges} | {}{} | {:.2} | {:.0} | {} | {} | {:.0} |",
+                "| {name} | {nodes} | {edges} | {}{} | {:.2} | {:.0} | {} | {} | {:.0} | {:.2} / {:.2} / {:.2} | {:.2} |",
                 r.frames,
                 settled(r.frames),
                 r.cv,
@@ -209,6 +239,10 @@ fn main() {
                 count(r.overlaps),
                 count(r.crossings),
                 r.micros_per_step,
+                r.step_ms(0.5),
+                r.step_ms(0.95),
+                r.step_ms(1.0),
+                r.micros_per_step * r.frames as f64 / 1e6,
             );
             continue;
         }

@@ -15,9 +15,12 @@ use std::collections::HashSet;
 
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
-    CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, EdgeJoint, Layout, LayoutExtras,
-    RapierLayout, RapierLayoutConfig, RapierLayoutState, SceneFile,
+    CanvasEdge, CanvasNode, CanvasSceneInput, EdgeJoint, Layout, RapierLayoutConfig,
 };
+
+mod common;
+
+use common::{load, Host};
 
 const FRAME: f32 = 1.0 / 60.0;
 
@@ -53,55 +56,21 @@ fn memory_kib() -> (u64, u64) {
     (field("VmRSS:"), field("VmHWM:"))
 }
 
-fn load(name: &str) -> CanvasSceneInput<u32> {
-    let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).expect("scene file");
-    serde_json::from_str::<SceneFile>(&text)
-        .expect("scene json")
-        .into_scene()
-}
-
-struct Host {
-    scene: CanvasSceneInput<u32>,
-    layout: RapierLayout<u32>,
-    state: RapierLayoutState,
-    extras: LayoutExtras<u32>,
-}
-
-impl Host {
-    fn frame(&mut self, dt: f32) {
-        let deltas = self.layout.step(
-            &self.scene,
-            &mut self.state,
-            dt,
-            &CanvasViewport::default(),
-            &self.extras,
-        );
-        self.scene.apply_deltas(&deltas);
-    }
-
-    /// The distinct undirected edges between scene nodes, self-loops left out.
-    fn edge_count(&self) -> usize {
-        let ids: HashSet<u32> = self.scene.nodes.iter().map(|n| n.id).collect();
-        let pairs: HashSet<(u32, u32)> = self
-            .scene
-            .edges
-            .iter()
-            .filter(|e| e.source != e.target && ids.contains(&e.source) && ids.contains(&e.target))
-            .map(|e| (e.source.min(e.target), e.source.max(e.target)))
-            .collect();
-        pairs.len()
-    }
+/// The distinct undirected edges between the scene's nodes, self-loops left out.
+fn edge_count(scene: &CanvasSceneInput<u32>) -> usize {
+    let ids: HashSet<u32> = scene.nodes.iter().map(|n| n.id).collect();
+    let pairs: HashSet<(u32, u32)> = scene
+        .edges
+        .iter()
+        .filter(|e| e.source != e.target && ids.contains(&e.source) && ids.contains(&e.target))
+        .map(|e| (e.source.min(e.target), e.source.max(e.target)))
+        .collect();
+    pairs.len()
 }
 
 fn edits(calls: usize, config: RapierLayoutConfig) -> Result<(), String> {
     let springs = !matches!(config.edge_joint, EdgeJoint::None);
-    let mut host = Host {
-        scene: load("les_miserables"),
-        layout: RapierLayout::new(config),
-        state: RapierLayoutState::default(),
-        extras: LayoutExtras::default(),
-    };
+    let mut host = Host::new(load("les_miserables"), config);
     let base = host.scene.nodes.len();
     let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
     let mut next_id = 10_000;
@@ -159,7 +128,7 @@ fn edits(calls: usize, config: RapierLayoutConfig) -> Result<(), String> {
         }
         host.frame(FRAME);
         let world = host.layout.world().ok_or("no world")?;
-        let joints = if springs { host.edge_count() } else { 0 };
+        let joints = if springs { edge_count(&host.scene) } else { 0 };
         if world.body_count() != host.scene.nodes.len() || world.joint_count() != joints {
             return Err(format!(
                 "call {call}: {} bodies and {} joints for {} nodes and {joints} edges",
@@ -190,12 +159,7 @@ fn edits(calls: usize, config: RapierLayoutConfig) -> Result<(), String> {
 }
 
 fn idle(calls: usize, config: RapierLayoutConfig) -> Result<(), String> {
-    let mut host = Host {
-        scene: load("les_miserables"),
-        layout: RapierLayout::new(config),
-        state: RapierLayoutState::default(),
-        extras: LayoutExtras::default(),
-    };
+    let mut host = Host::new(load("les_miserables"), config);
     let centre = |scene: &CanvasSceneInput<u32>| {
         let sum = scene
             .nodes

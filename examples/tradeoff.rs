@@ -18,8 +18,12 @@ use std::time::Instant;
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::{
     Accuracy, CanvasSceneInput, CanvasViewport, EdgeJoint, Layout, LayoutExtras, RapierLayout,
-    RapierLayoutConfig, RapierLayoutState, SceneFile,
+    RapierLayoutConfig, RapierLayoutState,
 };
+
+mod common;
+
+use common::load;
 
 const FRAME: f32 = 1.0 / 60.0;
 
@@ -74,14 +78,6 @@ const REFERENCE: Setting = Setting {
     accuracy: Accuracy::Precise,
     timestep: 1.0 / 240.0,
 };
-
-fn load(name: &str) -> CanvasSceneInput<u32> {
-    let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).expect("scene file");
-    serde_json::from_str::<SceneFile>(&text)
-        .expect("scene json")
-        .into_scene()
-}
 
 type Positions = HashMap<u32, Point2D<f32>>;
 

@@ -57,7 +57,7 @@
 //! | `input/` | the host's scene ([`CanvasSceneInput`]), the scene file format, what counts as bad input ([`LayoutError`]), the topology and its order-free hash |
 //! | `config/` | [`RapierLayoutConfig`] and its parts: edge joints and body kinds, the solver and contacts, the [`Cooling`] schedule, the presets |
 //! | `adapter/` | [`RapierLayout`]: one file per stage of a call, below |
-//! | `forces/` | the forces put on bodies every substep, one per file (many-body repulsion over the Barnes–Hut tree, link bias, centre pull) |
+//! | `forces/` | the forces put on bodies every substep, one per file (many-body repulsion over the Barnes–Hut tree, edge springs and link bias, centre pull), and the layout's own disk separation in `forces/collide/` |
 //! | `world/` | [`RapierSceneWorld`]: bodies, joints, springs scaled at once, sleep and wake, stepping, recovery of quarantined bodies, contact events |
 //! | `timestep.rs`, `layout.rs`, `quality` | frame time to substeps, the [`Layout`] trait, layout quality measures |
 //!
@@ -67,8 +67,9 @@
 //!    `adapter/edits.rs` patches the world (`world/nodes.rs`, `world/edges.rs`).
 //! 3. `adapter/sync_in.rs` and `adapter/drag.rs` put the host's pins, drags, releases
 //!    and edits onto the bodies (`world/bodies.rs`, `world/activity.rs`).
-//! 4. `adapter/heat.rs` reheats a cooling layout after a disturbance and re-tunes its
-//!    springs (`world/spring_scale.rs`).
+//! 4. `adapter/heat.rs` reheats a cooling layout after a disturbance, all of it or near
+//!    the disturbance only (`adapter/disturbance.rs`), and re-tunes its springs
+//!    (`world/spring_scale.rs`).
 //! 5. `adapter/substeps.rs` runs each substep: kinematic drives, `forces/`, one rapier
 //!    step (`world/stepping.rs`, `world/recovery.rs`).
 //! 6. `adapter/sync_out.rs` reads each free node's displacement; `adapter/rest.rs`
@@ -141,8 +142,8 @@ pub use rapier2d;
 pub use adapter::{RapierLayout, RapierLayoutState, REST_TIME};
 pub use config::cooling::Cooling;
 pub use config::{
-    Accuracy, BodyKindPolicy, ContactSoftness, EdgeJoint, RapierLayoutConfig, SolverSettings,
-    TopologyUpdate,
+    Accuracy, BodyKindPolicy, ContactModel, ContactSoftness, EdgeJoint, RapierLayoutConfig,
+    SolverSettings, SpringModel, TopologyUpdate,
 };
 pub use forces::barnes_hut::ManyBody;
 pub use forces::many_body::Repulsion;

@@ -1,7 +1,8 @@
-//! Layout quality measures: edge-length spread, overlapping nodes, edge crossings.
-//! Used by the quality example and tests; handy for hosts comparing layouts.
+//! Layout quality measures: edge-length spread, overlapping nodes, edge crossings, and
+//! how far a disturbance reached (displacement by hop distance). Used by the quality and
+//! feel examples and the tests; handy for hosts comparing layouts.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, VecDeque};
 use std::hash::Hash;
 
 use euclid::default::Point2D;
@@ -9,16 +10,21 @@ use euclid::default::Point2D;
 use crate::input::scene::CanvasSceneInput;
 use crate::layout::IdHasher;
 
-/// The edges as segments (self-loops and edges naming missing nodes left out).
-fn segments<N: Clone + Eq + Hash>(
-    scene: &CanvasSceneInput<N>,
-) -> Vec<(usize, usize, Point2D<f32>, Point2D<f32>)> {
-    let index: HashMap<&N, usize, IdHasher> = scene
+/// Each node's index in the scene's node list, by id.
+fn index_of<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> HashMap<&N, usize, IdHasher> {
+    scene
         .nodes
         .iter()
         .enumerate()
         .map(|(i, n)| (&n.id, i))
-        .collect();
+        .collect()
+}
+
+/// The edges as segments (self-loops and edges naming missing nodes left out).
+fn segments<N: Clone + Eq + Hash>(
+    scene: &CanvasSceneInput<N>,
+) -> Vec<(usize, usize, Point2D<f32>, Point2D<f32>)> {
+    let index = index_of(scene);
     scene
         .edges
         .iter()
@@ -133,4 +139,114 @@ pub fn edge_crossings<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> usiz
         }
     }
     count
+}
+
+/// Hop distance (edges on a shortest path) from `origin` to every node it reaches, over
+/// the scene's edges taken as undirected; `origin` itself is at 0. Empty when `origin`
+/// is not in the scene. O(n + e).
+///
+/// # Example
+/// ```
+/// use graph_canvas_layout::{euclid::default::Point2D, quality, CanvasEdge, CanvasNode, CanvasSceneInput};
+/// let scene = CanvasSceneInput::new(
+///     (0..4).map(|i| CanvasNode::new(i, Point2D::new(i as f32, 0.0))).collect(),
+///     vec![CanvasEdge::new(0, 1), CanvasEdge::new(2, 1)],
+/// );
+/// let hops = quality::hop_distances(&scene, &0);
+/// assert_eq!((hops[&0], hops[&1], hops[&2]), (0, 1, 2));
+/// assert!(!hops.contains_key(&3), "not connected");
+/// ```
+pub fn hop_distances<N: Clone + Eq + Hash>(
+    scene: &CanvasSceneInput<N>,
+    origin: &N,
+) -> HashMap<N, usize> {
+    let Some(&start) = index_of(scene).get(origin) else {
+        return HashMap::new();
+    };
+    let mut neighbours = vec![Vec::new(); scene.nodes.len()];
+    for (a, b, _, _) in segments(scene) {
+        neighbours[a].push(b);
+        neighbours[b].push(a);
+    }
+    let mut hops = vec![usize::MAX; scene.nodes.len()];
+    hops[start] = 0;
+    let mut queue = VecDeque::from([start]);
+    while let Some(i) = queue.pop_front() {
+        for &j in &neighbours[i] {
+            if hops[j] == usize::MAX {
+                hops[j] = hops[i] + 1;
+                queue.push_back(j);
+            }
+        }
+    }
+    scene
+        .nodes
+        .iter()
+        .zip(hops)
+        .filter(|&(_, h)| h != usize::MAX)
+        .map(|(n, h)| (n.id.clone(), h))
+        .collect()
+}
+
+/// How far the nodes at one hop distance moved ([`displacement_by_hops`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Displacement {
+    /// Mean distance moved, in world units (0 without nodes).
+    pub mean: f32,
+    /// The farthest any of them moved.
+    pub max: f32,
+    /// How many nodes are at this distance.
+    pub nodes: usize,
+}
+
+/// How far each node moved between `before` and `after`, grouped by its hop distance in
+/// `after` from `origin`: entry `h` for nodes `h` hops away, the last entry (of
+/// `groups`, at least 1) for those as far or farther, or not connected to `origin`.
+/// Nodes missing from either scene are left out. What a user sees of an edit or a drag:
+/// a local one moves its neighbourhood and leaves the far side where it was.
+///
+/// # Example
+/// ```
+/// use graph_canvas_layout::{euclid::default::Point2D, quality, CanvasEdge, CanvasNode, CanvasSceneInput};
+/// let before = CanvasSceneInput::new(
+///     (0..3).map(|i| CanvasNode::new(i, Point2D::new(100.0 * i as f32, 0.0))).collect(),
+///     vec![CanvasEdge::new(0, 1), CanvasEdge::new(1, 2)],
+/// );
+/// let mut after = before.clone();
+/// after.nodes[0].position.x -= 30.0;
+/// after.nodes[1].position.x -= 10.0;
+/// let rows = quality::displacement_by_hops(&before, &after, &0, 2);
+/// assert_eq!((rows[0].mean, rows[0].nodes), (30.0, 1));
+/// assert_eq!((rows[1].mean, rows[1].max, rows[1].nodes), (5.0, 10.0, 2), "hops 1 and 2");
+/// ```
+pub fn displacement_by_hops<N: Clone + Eq + Hash>(
+    before: &CanvasSceneInput<N>,
+    after: &CanvasSceneInput<N>,
+    origin: &N,
+    groups: usize,
+) -> Vec<Displacement> {
+    let groups = groups.max(1);
+    let hops = hop_distances(after, origin);
+    let was: HashMap<&N, Point2D<f32>, IdHasher> =
+        before.nodes.iter().map(|n| (&n.id, n.position)).collect();
+    let mut rows = vec![Displacement::default(); groups];
+    for node in &after.nodes {
+        let Some(&from) = was.get(&node.id) else {
+            continue;
+        };
+        let group = hops
+            .get(&node.id)
+            .map_or(groups - 1, |&h| h.min(groups - 1));
+        let moved = (node.position - from).length();
+        let row = &mut rows[group];
+        row.mean += moved;
+        row.max = row.max.max(moved);
+        row.nodes += 1;
+    }
+    for row in &mut rows {
+        if row.nodes > 0 {
+            row.mean /= row.nodes as f32;
+        }
+    }
+    rows
 }

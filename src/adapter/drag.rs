@@ -1,13 +1,16 @@
 //! Drags and the hand-off that throws: a dragged node's pointer velocity measured against
-//! the frame's real elapsed time, the velocity a release hands to the body, and the
-//! drives that move kinematic bodies (dragged, or pinned and moved by the host) to the
-//! host's position over a call's substeps.
+//! the frame's real elapsed time, the velocity a release hands to the body, the flight
+//! of a thrown node ([`RapierLayoutConfig::flight_damping`](crate::RapierLayoutConfig::flight_damping)),
+//! and the drives that move kinematic bodies (dragged, or pinned and moved by the host)
+//! to the host's position over a call's substeps.
 
 use std::hash::Hash;
 
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::Vector;
 
+use super::RapierLayout;
+use crate::sanitize::finite_or;
 use crate::world::slot::HostSync;
 use crate::world::RapierSceneWorld;
 
@@ -80,5 +83,48 @@ fn clamp_speed(v: Vector2D<f32>, max_speed: f32) -> Vector2D<f32> {
         v * (max_speed / speed)
     } else {
         v
+    }
+}
+
+/// A thrown node, from its release until it rests: damped as
+/// [`flight_damping`](crate::RapierLayoutConfig::flight_damping) says until it turns
+/// back, and keeping the layout from its cold stop until it slows to rest.
+#[derive(Clone, Debug)]
+pub(super) struct Flight<N> {
+    pub(super) id: N,
+    /// The direction it was thrown in.
+    pub(super) direction: Vector2D<f32>,
+    /// It turned back: its damping is the material's again.
+    pub(super) landed: bool,
+}
+
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    /// Lands the thrown nodes that turned back, slowed, were grabbed or left (they take
+    /// the material's damping again), and forgets those that rest.
+    pub(super) fn land_flights(&mut self) {
+        if self.flights.is_empty() {
+            return;
+        }
+        let damping = finite_or(self.config.material.linear_damping, 0.0).max(0.0);
+        let rest_speed = self.config.rest_speed;
+        let Some(world) = self.world.as_mut() else {
+            self.flights.clear();
+            return;
+        };
+        self.flights.retain_mut(|flight| {
+            let Some(s) = world.slot_of(&flight.id) else {
+                return false;
+            };
+            let body = world.body_at(s);
+            let v = body.linvel();
+            let v = Vector2D::new(v.x, v.y);
+            let moving = body.is_dynamic() && !body.is_sleeping() && v.length() > rest_speed;
+            let outward = moving && v.dot(flight.direction) > 0.0;
+            if !flight.landed && !outward {
+                flight.landed = true;
+                world.body_at_mut(s).set_linear_damping(damping);
+            }
+            moving
+        });
     }
 }

@@ -9,7 +9,7 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 
 use super::RapierLayout;
-use crate::config::{EdgeJoint, RapierLayoutConfig, TopologyUpdate};
+use crate::config::{EdgeJoint, RapierLayoutConfig, SpringModel, TopologyUpdate};
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::input::topology::Topology;
 use crate::input::validation::node_is_valid;
@@ -52,19 +52,32 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     fn build_world(&mut self, scene: &CanvasSceneInput<N>, topology: &Topology) {
         let mut world = RapierSceneWorld::with_options(self.world_options());
         world.set_timestep(self.joint_dt);
+        world.set_springs_as_forces(self.config.spring_model == SpringModel::Forces);
         // A new world counts its versions from 0 again.
         self.forces.reset();
         // Contacts stay out of the first unfolding until the heat lets them in.
         world.set_contacts_enabled(!(self.heat.unfolding || self.rebuilds == 0));
+        let mut touched = Vec::new();
         insert_missing_nodes(
             &mut world,
             scene,
             topology,
             &self.config,
             self.world.as_ref(),
+            &mut touched,
         );
         let degrees = topology.degrees(scene.nodes.len());
-        insert_joints(&mut world, scene, topology, &degrees, &self.config);
+        insert_joints(
+            &mut world,
+            scene,
+            topology,
+            &degrees,
+            &self.config,
+            &mut touched,
+        );
+        // A new world starts again: every body at rest where the host has it.
+        self.disturbances.reset();
+        self.disturbances.touch_everything();
         self.world = Some(world);
         self.applied = Some(self.config.clone());
         if self.rebuilds == 0 {
@@ -90,11 +103,25 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             .filter(|id| !keep.contains(id))
             .cloned()
             .collect();
+        // What the edit touches: the neighbours of removed nodes, new nodes, and the
+        // ends of edges that came or went.
+        let mut touched: Vec<N> = Vec::new();
+        if !gone.is_empty() {
+            let leaving: HashSet<&N, IdHasher> = gone.iter().collect();
+            for (a, b) in world.joint_ends() {
+                let (ia, ib) = (world.id_at(a), world.id_at(b));
+                match (leaving.contains(ia), leaving.contains(ib)) {
+                    (true, false) => touched.push(ib.clone()),
+                    (false, true) => touched.push(ia.clone()),
+                    _ => {}
+                }
+            }
+        }
         for id in &gone {
             world.remove_node(id);
         }
         world.set_timestep(self.joint_dt);
-        insert_missing_nodes(world, scene, topology, config, None);
+        insert_missing_nodes(world, scene, topology, config, None, &mut touched);
         // Joints: drop those whose edge went away, add the new ones.
         let index_of: HashMap<&N, usize, IdHasher> = topology
             .nodes
@@ -106,18 +133,29 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             .iter()
             .map(|&(a, b)| (a.min(b), a.max(b)))
             .collect();
-        world.retain_edge_joints(|a, b| match (index_of.get(a), index_of.get(b)) {
-            (Some(&x), Some(&y)) => wanted.contains(&(x.min(y), x.max(y))),
-            _ => false,
+        world.retain_edge_joints(|a, b| {
+            let kept = match (index_of.get(a), index_of.get(b)) {
+                (Some(&x), Some(&y)) => wanted.contains(&(x.min(y), x.max(y))),
+                _ => false,
+            };
+            if !kept {
+                touched.extend([a.clone(), b.clone()]);
+            }
+            kept
         });
         let degrees = topology.degrees(scene.nodes.len());
-        insert_joints(world, scene, topology, &degrees, config);
+        insert_joints(world, scene, topology, &degrees, config, &mut touched);
         if degree_exponent(config).is_some() {
             // Springs whose ends changed degree take their new share.
             world.retune_edge_joints(|a, b| match (index_of.get(a), index_of.get(b)) {
                 (Some(&x), Some(&y)) => edge_joint_for(config, degrees[x], degrees[y]),
                 _ => config.edge_joint,
             });
+        }
+        for id in &touched {
+            if let Some(s) = world.slot_of(id) {
+                self.disturbances.touch(s, true);
+            }
         }
         self.patches += 1;
     }
@@ -133,6 +171,7 @@ fn insert_missing_nodes<N: Clone + Eq + Hash>(
     topology: &Topology,
     config: &RapierLayoutConfig,
     old: Option<&RapierSceneWorld<N>>,
+    inserted: &mut Vec<N>,
 ) {
     let mut spread = CoincidenceSpreader::default();
     for &i in &topology.nodes {
@@ -150,6 +189,7 @@ fn insert_missing_nodes<N: Clone + Eq + Hash>(
         };
         world.insert_node(&binding_for(config, node), spread.place(position));
         world.rebase_initial_position(&node.id, position);
+        inserted.push(node.id.clone());
         let before = old.and_then(|w| Some(*w.host_at(w.slot_of(&node.id)?)));
         if let (Some(before), Some(s)) = (before, world.slot_of(&node.id)) {
             // A drag in progress survives the rebuild, so its release still throws.
@@ -161,20 +201,21 @@ fn insert_missing_nodes<N: Clone + Eq + Hash>(
     }
 }
 
-/// Inserts the joint of every edge of `topology` (pairs that have one are skipped).
+/// Inserts the joint of every edge of `topology` (pairs that have one are skipped) and
+/// records the ends of the new ones in `ends`.
 fn insert_joints<N: Clone + Eq + Hash>(
     world: &mut RapierSceneWorld<N>,
     scene: &CanvasSceneInput<N>,
     topology: &Topology,
     degrees: &[u32],
     config: &RapierLayoutConfig,
+    ends: &mut Vec<N>,
 ) {
     for &(a, b) in &topology.edges {
-        world.insert_edge_joint(
-            &scene.nodes[a].id,
-            &scene.nodes[b].id,
-            &edge_joint_for(config, degrees[a], degrees[b]),
-        );
+        let (ia, ib) = (&scene.nodes[a].id, &scene.nodes[b].id);
+        if world.insert_edge_joint(ia, ib, &edge_joint_for(config, degrees[a], degrees[b])) {
+            ends.extend([ia.clone(), ib.clone()]);
+        }
     }
 }
 

@@ -7,6 +7,7 @@
 use std::hash::Hash;
 
 use super::RapierLayout;
+use crate::config::cooling::Cooling;
 use crate::config::solver::ContactSoftness;
 
 #[cfg(doc)]
@@ -31,6 +32,9 @@ pub(crate) struct Heat {
     /// (or the layout rests), when [`Cooling::first_contact_heat`](crate::Cooling) and
     /// [`Cooling::hot_contact_frequency`](crate::Cooling) apply.
     pub(crate) unfolding: bool,
+    /// The hottest node's own heat after a local disturbance (0 when none is hotter than
+    /// the layout).
+    pub(crate) hottest: f32,
 }
 
 impl Default for Heat {
@@ -40,6 +44,7 @@ impl Default for Heat {
             cold_time: 0.0,
             halted: false,
             unfolding: false,
+            hottest: 0.0,
         }
     }
 }
@@ -70,13 +75,73 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         }
         if let Some(cooling) = self.config.cooling {
             if disturbed {
-                self.heat.alpha = cooling.reheated(self.heat.alpha);
+                match (cooling.reheat_hops, self.world.as_mut()) {
+                    (Some(hops), Some(world)) if !self.disturbances.everything() => {
+                        // Only near what was touched.
+                        let heat = cooling.reheated(0.0);
+                        let coasting = cooling.coasting_heat();
+                        self.disturbances.spread(world, hops, heat, coasting);
+                        self.heat.hottest = self.heat.hottest.max(heat);
+                    }
+                    (_, world) => {
+                        self.heat.alpha = cooling.reheated(self.heat.alpha);
+                        // All of it: springs applied as forces and the layout's own
+                        // disk separation link no rapier island that would wake it.
+                        if let Some(world) = world {
+                            world.wake_dynamic_bodies();
+                        }
+                    }
+                }
                 // Also when the reheat cannot lift the heat off its floor: a disturbed
                 // layout gets half a second before it is stopped again.
                 self.heat.cold_time = 0.0;
             }
         }
         true
+    }
+
+    /// Heats the whole layout to at least `alpha`, clamped to the schedule's floor and to
+    /// 1, and wakes every body, as d3-force's `simulation.alpha(a).restart()`: the next
+    /// calls lay the graph out again from where it is, the way a "relayout" button
+    /// wants, whatever [`Cooling::reheat_hops`](crate::Cooling::reheat_hops) says.
+    /// Without a cooling schedule only wakes the bodies.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasEdge, CanvasNode,
+    ///     CanvasSceneInput, Layout, LayoutExtras, RapierLayout, RapierLayoutConfig,
+    ///     RapierLayoutState};
+    /// let mut scene = CanvasSceneInput::new(
+    ///     vec![CanvasNode::new(1_u32, Point2D::origin()), CanvasNode::new(2, Point2D::new(300.0, 0.0))],
+    ///     vec![CanvasEdge::new(1, 2)],
+    /// );
+    /// let mut layout = RapierLayout::new(RapierLayoutConfig::force_directed());
+    /// let (mut state, extras) = (RapierLayoutState::default(), LayoutExtras::default());
+    /// let mut frame = |layout: &mut RapierLayout<u32>, scene: &mut CanvasSceneInput<u32>| {
+    ///     let deltas = layout.step(scene, &mut state, 1.0 / 60.0, &Default::default(), &extras);
+    ///     scene.apply_deltas(&deltas);
+    ///     deltas
+    /// };
+    /// while !layout.is_converged(&RapierLayoutState::default()) {
+    ///     frame(&mut layout, &mut scene);
+    /// }
+    /// assert!(frame(&mut layout, &mut scene).is_empty(), "at rest");
+    /// layout.reheat(1.0);
+    /// assert_eq!(layout.heat(), Some(1.0));
+    /// assert!(!layout.is_converged(&RapierLayoutState::default()));
+    /// ```
+    pub fn reheat(&mut self, alpha: f32) {
+        if let Some(cooling) = self.config.cooling {
+            let alpha = if alpha.is_finite() { alpha } else { 1.0 };
+            self.heat.alpha = self.heat.alpha.max(alpha.clamp(cooling.floor(), 1.0));
+            self.heat.cold_time = 0.0;
+        }
+        self.heat.halted = false;
+        self.rest.converged = false;
+        self.rest.calm_time = 0.0;
+        if let Some(world) = self.world.as_mut() {
+            world.wake_dynamic_bodies();
+        }
     }
 
     /// The heat's effect on this call, applied to the world: springs re-tuned to the
@@ -136,6 +201,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         match self.config.cooling {
             Some(cooling) => {
                 self.heat.alpha = cooling.cooled(self.heat.alpha, simulated);
+                self.cool_nodes(cooling, simulated);
                 self.stop_when_cold(cooling.floor(), simulated);
                 if self.heat.alpha <= cooling.floor() {
                     self.end_unfolding();
@@ -145,6 +211,27 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 self.end_unfolding();
             }
         }
+    }
+
+    /// Cools every node heated by a local disturbance by `simulated` seconds of the
+    /// schedule; a node as cold as the layout takes the layout's heat again.
+    fn cool_nodes(&mut self, cooling: Cooling, simulated: f32) {
+        if self.heat.hottest <= 0.0 {
+            return;
+        }
+        let alpha = self.heat.alpha;
+        let mut hottest = 0.0_f32;
+        if let Some(world) = self.world.as_mut() {
+            for s in 0..world.slot_count() {
+                let host = world.host_at_mut(s);
+                if host.heat > 0.0 {
+                    let heat = cooling.cooled(host.heat, simulated);
+                    host.heat = if heat > alpha { heat } else { 0.0 };
+                    hottest = hottest.max(host.heat);
+                }
+            }
+        }
+        self.heat.hottest = hottest;
     }
 
     /// Ends the first unfolding: contacts in (if they were left out) and firm from here

@@ -32,6 +32,7 @@ use crate::timestep::DEFAULT_TIMESTEP;
 use crate::world::events::SceneEvent;
 use crate::world::RapierSceneWorld;
 
+mod disturbance;
 mod drag;
 mod edits;
 mod heat;
@@ -43,7 +44,8 @@ mod substeps;
 mod sync_in;
 mod sync_out;
 
-use drag::Drive;
+use disturbance::Disturbances;
+use drag::{Drive, Flight};
 use heat::Heat;
 use matching::Matching;
 use rest::Rest;
@@ -94,7 +96,11 @@ pub struct RapierLayout<N> {
     matching: Matching<N>,
     /// Kinematic bodies moving to the host's positions over this call's substeps.
     drives: Vec<Drive>,
+    /// Thrown nodes in flight.
+    flights: Vec<Flight<N>>,
     heat: Heat,
+    /// What this call disturbed, for a local reheat.
+    disturbances: Disturbances,
     rest: Rest,
     forces: Forces<N>,
     recovered: Vec<N>,
@@ -143,7 +149,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             patches: 0,
             matching: Matching::default(),
             drives: Vec::new(),
+            flights: Vec::new(),
             heat: Heat::default(),
+            disturbances: Disturbances::default(),
             rest: Rest::default(),
             forces: Forces::default(),
             recovered: Vec::new(),
@@ -220,10 +228,44 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     ///     layout.step(&scene, &mut state, 1.0 / 60.0, &Default::default(), &LayoutExtras::default());
     /// }
     /// let alpha = layout.heat().unwrap();
-    /// assert!(alpha < 0.5 && alpha > 0.1, "one second of an 8 s schedule: {alpha}");
+    /// assert!(alpha < 0.5 && alpha > 0.1, "one second of a 4.5 s schedule: {alpha}");
     /// ```
     pub fn heat(&self) -> Option<f32> {
         self.config.cooling.map(|_| self.heat.alpha)
+    }
+
+    /// The heat the forces on `node` act with after the last call: its own after a local
+    /// disturbance ([`Cooling::reheat_hops`](crate::Cooling::reheat_hops)) while that is
+    /// hotter than the layout, else the layout's ([`heat`](Self::heat)). `None` without
+    /// a schedule or a body for the node.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasEdge, CanvasNode,
+    ///     CanvasSceneInput, Layout, LayoutExtras, RapierLayout, RapierLayoutConfig,
+    ///     RapierLayoutState};
+    /// let mut scene = CanvasSceneInput::new(
+    ///     vec![CanvasNode::new(1_u32, Point2D::origin()), CanvasNode::new(2, Point2D::new(100.0, 0.0))],
+    ///     vec![CanvasEdge::new(1, 2)],
+    /// );
+    /// let mut layout = RapierLayout::new(RapierLayoutConfig::force_directed());
+    /// let (mut state, mut extras) = (RapierLayoutState::default(), LayoutExtras::default());
+    /// for _ in 0..600 {
+    ///     let deltas = layout.step(&scene, &mut state, 1.0 / 60.0, &Default::default(), &extras);
+    ///     scene.apply_deltas(&deltas);
+    /// }
+    /// assert!(layout.is_converged(&state));
+    /// // Drag node 1: its neighbour heats, the layout does not.
+    /// extras.dragging.insert(1);
+    /// scene.nodes[0].position.x -= 30.0;
+    /// layout.step(&scene, &mut state, 1.0 / 60.0, &Default::default(), &extras);
+    /// assert!(layout.node_heat(&2).unwrap() > 10.0 * layout.heat().unwrap());
+    /// ```
+    pub fn node_heat(&self, node: &N) -> Option<f32> {
+        let alpha = self.heat()?;
+        let world = self.world.as_ref()?;
+        let own = world.host_at(world.slot_of(node)?).heat;
+        Some(own.max(alpha))
     }
 
     /// Nodes whose bodies went non-finite during the last call (rapier quarantined
@@ -319,6 +361,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             return DeltaMap::default();
         }
         let plan = self.plan_frame(state, dt);
+        self.disturbances.clear();
         let reconfigured = self.apply_config_changes();
         let unfolding_before = self.heat.unfolding;
         let mut disturbed = self.sync_topology(scene, extras);
@@ -337,6 +380,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             .as_ref()
             .map_or(0, RapierSceneWorld::awake_body_count);
         self.simulate(&plan, gravity);
+        self.land_flights();
         self.collect_recovered();
         state.simulated_time += f64::from(plan.simulated());
         self.cool(plan.simulated());

@@ -9,6 +9,7 @@ use super::rest::Rest;
 use super::RapierLayout;
 #[cfg(doc)]
 use crate::config::RapierLayoutConfig;
+use crate::config::SpringModel;
 use crate::world::WorldOptions;
 
 impl<N: Clone + Eq + Hash> RapierLayout<N> {
@@ -23,7 +24,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             return false;
         }
         let structural = applied.material != self.config.material
-            || applied.collisions != self.config.collisions
+            || applied.rapier_colliders() != self.config.rapier_colliders()
             || applied.contact_events != self.config.contact_events
             || applied.default_radius.to_bits() != self.config.default_radius.to_bits();
         if self.forces.any_active(applied) && !self.forces.any_active(&self.config) {
@@ -43,11 +44,13 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.world = None;
             self.topology_hash = 0;
         } else if applied.edge_joint != self.config.edge_joint
+            || applied.spring_model != self.config.spring_model
             || applied.spring_degree_exponent.to_bits()
                 != self.config.spring_degree_exponent.to_bits()
         {
             if let Some(world) = self.world.as_mut() {
                 world.clear_edge_joints();
+                world.set_springs_as_forces(self.config.spring_model == SpringModel::Forces);
             }
             // Forces the topology pass to re-insert every joint.
             self.topology_hash = 0;
@@ -71,7 +74,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// What the world models under this configuration.
     pub(super) fn world_options(&self) -> WorldOptions {
         WorldOptions {
-            collisions: self.config.collisions,
+            collisions: self.config.rapier_colliders(),
             contact_events: self.config.contact_events,
         }
     }

@@ -43,6 +43,13 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.rest.converged = false;
         }
         self.rest.converged |= self.heat.halted;
+        if self.rest.converged {
+            // At rest, the schedule is over: what disturbs the layout later meets its
+            // coldest forces (as after the cold stop).
+            if let Some(cooling) = self.config.cooling {
+                self.heat.alpha = self.heat.alpha.min(cooling.floor());
+            }
+        }
     }
 
     /// A call on a halted layout: nothing moves until the next disturbance.
@@ -65,14 +72,21 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// graph (one rapier island) awake for ever.
     pub(super) fn stop_when_cold(&mut self, floor: f32, simulated: f32) {
         let heat: &mut Heat = &mut self.heat;
-        if heat.alpha > floor {
+        // NOTE: a thrown node still on its way keeps the layout going.
+        if heat.alpha > floor || heat.hottest > floor || !self.flights.is_empty() {
             heat.cold_time = 0.0;
             return;
         }
         heat.cold_time += simulated;
         if let Some(world) = self.world.as_mut() {
             if heat.cold_time >= REST_TIME {
+                if self.config.separates_disks() && world.contacts_enabled() {
+                    // No overlap is left standing.
+                    self.forces.part_overlaps(world);
+                }
                 world.halt_dynamic_bodies();
+                // Asleep, so that a later local disturbance wakes only what it reaches.
+                world.sleep_dynamic_bodies_now();
                 heat.halted = true;
             }
         }

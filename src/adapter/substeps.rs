@@ -10,6 +10,8 @@ use euclid::default::Vector2D;
 use super::drag::drive_kinematic_bodies;
 use super::state::RapierLayoutState;
 use super::RapierLayout;
+use crate::config::SolverSettings;
+use crate::forces::HeatLaw;
 use crate::sanitize::positive_or;
 use crate::timestep::{fixed_timestep, StepPlan};
 
@@ -18,7 +20,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// further; an unusable `dt` is still one whole fixed step. New joints are tuned for
     /// the longest substep this configuration takes.
     pub(super) fn plan_frame(&mut self, state: &RapierLayoutState, dt: f32) -> StepPlan {
-        let substeps = self.config.accuracy.solver_settings().substeps;
+        let substeps = self.solver_settings().substeps;
         let mut plan = StepPlan::new(
             dt,
             state.dt,
@@ -31,15 +33,33 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         plan
     }
 
+    /// What this call asks of rapier's solver. With the layout's own disk separation,
+    /// rapier's solver iterations become substeps of the layout's, so that contacts
+    /// (and the other forces) are worked out anew for each.
+    fn solver_settings(&self) -> SolverSettings {
+        let settings = self.config.accuracy.solver_settings();
+        if self.config.separates_disks() {
+            SolverSettings {
+                solver_iterations: 1,
+                substeps: settings
+                    .substeps
+                    .saturating_mul(settings.solver_iterations as u32),
+                ..settings
+            }
+        } else {
+            settings
+        }
+    }
+
     /// Runs the call's substeps under `gravity`.
     pub(super) fn simulate(&mut self, plan: &StepPlan, gravity: Vector2D<f32>) {
         let heat = self.heat_world();
+        let solver = self.solver_settings();
         let config = &self.config;
         let Some(world) = self.world.as_mut() else {
             return;
         };
         let length_unit = positive_or(config.length_unit, 1.0);
-        let solver = config.accuracy.solver_settings();
         let params = world.integration_parameters_mut();
         params.dt = plan.substep_dt;
         params.length_unit = length_unit;
@@ -56,9 +76,16 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         for k in 0..plan.substeps {
             drive_kinematic_bodies(world, &self.drives, k, plan.substeps);
             if forces_on {
-                self.forces.apply(world, config, heat.scale);
+                let law = HeatLaw {
+                    alpha: heat.scale,
+                    cooling: config.cooling,
+                    blend: world.spring_blend(),
+                };
+                self.forces
+                    .apply(world, config, law, heat.contact_softness, plan.substep_dt);
             }
             world.step(gravity);
+            self.forces.settle(world, plan.substep_dt);
         }
     }
 

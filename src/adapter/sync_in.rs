@@ -14,13 +14,15 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::{RigidBodyType, Vector};
 
-use super::drag::{release_velocity, track_drag, Drive};
+use super::disturbance::Disturbances;
+use super::drag::{release_velocity, track_drag, Drive, Flight};
 use super::edits::radius_of;
 use super::matching::{NodeMatch, NO_SLOT};
 use super::RapierLayout;
 use crate::config::{BodyKindPolicy, RapierLayoutConfig};
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::layout::LayoutExtras;
+use crate::sanitize::finite_or;
 use crate::world::bindings::ColliderSpec;
 use crate::world::RapierSceneWorld;
 
@@ -48,6 +50,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             config: &self.config,
             frame_dt,
             sweeps: 0,
+            disturbances: &mut self.disturbances,
+            flights: &mut self.flights,
         };
         let check_drags = !extras.dragging.is_empty();
         let mut disturbed = false;
@@ -67,6 +71,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     pub(super) fn sync_gravity(&mut self, gravity: Vector2D<f32>, reconfigured: bool) -> bool {
         let disturbed = reconfigured || gravity != self.gravity;
         if disturbed {
+            self.disturbances.touch_everything();
             if let Some(world) = self.world.as_mut() {
                 world.wake_dynamic_bodies();
             }
@@ -85,6 +90,10 @@ struct SyncPass<'a, N> {
     frame_dt: f32,
     /// Host moves of kinematic and fixed bodies so far (see [`SyncPass::wake_in_path`]).
     sweeps: usize,
+    /// The nodes this call disturbs.
+    disturbances: &'a mut Disturbances,
+    /// Thrown nodes in flight.
+    flights: &'a mut Vec<Flight<N>>,
 }
 
 impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
@@ -108,6 +117,9 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
             // A free body the host left where it was told: nothing to sync, and no need
             // to touch the body at all (the common case at rest).
             *anchor = host;
+            if disturbed {
+                self.disturbances.touch(s, true);
+            }
             return disturbed;
         }
         let was_dragging = sync.dragging;
@@ -123,7 +135,11 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
                 return disturbed;
             }
             Some(RigidBodyType::Dynamic) => {
+                let thrown = current != RigidBodyType::Dynamic && was_dragging;
                 disturbed |= free(self.world, s, current, body_pos, host);
+                if thrown {
+                    self.take_off(s, &node.id);
+                }
             }
             Some(kind) => {
                 // Held: the body takes `kind` and goes to the host's position, at once
@@ -163,7 +179,33 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
         }
         sync.dragging = dragging;
         sync.synced = desired == Some(RigidBodyType::Dynamic) && !dragging;
+        if disturbed {
+            // A dragged or thrown node heats its neighbours, not itself.
+            self.disturbances.touch(s, !(dragging || was_dragging));
+        }
         disturbed
+    }
+
+    /// A node thrown this call flies with
+    /// [`flight_damping`](RapierLayoutConfig::flight_damping) until it turns back.
+    fn take_off(&mut self, s: usize, id: &N) {
+        let Some(damping) = self.config.flight_damping else {
+            return;
+        };
+        let v = self.world.body_at(s).linvel();
+        let v = Vector2D::new(v.x, v.y);
+        if v.length() <= self.config.rest_speed || !v.is_finite() {
+            return;
+        }
+        self.world
+            .body_at_mut(s)
+            .set_linear_damping(finite_or(damping, 0.0).max(0.0));
+        self.flights.retain(|f| f.id != *id);
+        self.flights.push(Flight {
+            id: id.clone(),
+            direction: v.normalize(),
+            landed: false,
+        });
     }
 
     /// Wakes the sleeping bodies in the path of the held body in `s` moving from `from`

@@ -12,13 +12,16 @@
 //! overlapping; on the first unfolding they can be left out while the layout is hot
 //! ([`Cooling::first_contact_heat`]) and start soft ([`Cooling::hot_contact_frequency`]).
 //! Any disturbance (a drag, a release, a host move, a
-//! topology change) heats the layout again to [`Cooling::reheat`].
+//! topology change) heats the layout again to [`Cooling::reheat`]: all of it, or with
+//! [`Cooling::reheat_hops`] only the nodes near the disturbance.
 //!
 //! Springs are re-tuned in place whenever the heat has moved 5 % away from the
 //! stiffness they have (about 140 times over a full schedule), never while the layout
 //! rests.
 
 use serde::{Deserialize, Serialize};
+
+use crate::sanitize::finite_or;
 
 /// The cooling schedule of [`RapierLayoutConfig::cooling`](crate::RapierLayoutConfig::cooling).
 ///
@@ -70,14 +73,12 @@ pub struct Cooling {
     /// outlast repulsion. `None` always uses `heat^spring_exponent`. The median is read
     /// at each re-tune. Without it a dense random graph (`n10000_e25000` ends with a
     /// mean edge near 7 times its rest length) is pulled together by its long springs
-    /// as the layout cools, into a jam of some 50,000 touching pairs whose nodes creep
-    /// through each other until the cold stop, and those contacts cost most of the
-    /// step. With the other [`force_directed`](crate::RapierLayoutConfig::force_directed)
-    /// settings, 2 takes `n10000_e25000` from 41 to 24 ms per step on average until
-    /// rest and its median node speed at heat 0.0015 from about 200 to 20 units/s, for
-    /// an edge-length CV of 0.50 against 0.47 (d3-force: 0.50). The six small shipped
-    /// graphs stay below the limit (their CVs move in the third decimal at most) and
-    /// `n1000_e2500` barely reaches it (CV 0.36 against 0.37). Costs one length per
+    /// as the layout cools, tighter than contacts can hold it. With the other
+    /// [`force_directed`](crate::RapierLayoutConfig::force_directed) settings, 2 takes
+    /// `n10000_e25000` from 6,257 overlapping pairs at rest to 89 and its 95th-percentile
+    /// step from 25.5 to 19.7 ms, for an edge-length CV of 0.50 against 0.49 (d3-force:
+    /// 0.50), and `n1000_e2500` from 13 overlapping pairs to none. The six small shipped
+    /// graphs stay below the limit (their CVs move in the third decimal at most). Costs one length per
     /// spring and a median at each re-tune. Has no effect at `spring_exponent` 1. Values
     /// that are not finite and positive count as `None`. Default: `None`
     /// ([`RapierLayoutConfig::force_directed`](crate::RapierLayoutConfig::force_directed)
@@ -113,6 +114,41 @@ pub struct Cooling {
     /// ([`RapierLayoutConfig::force_directed`](crate::RapierLayoutConfig::force_directed)
     /// uses `0.3`).
     pub first_contact_heat: Option<f32>,
+    /// How far a disturbance (a drag, a release, a host move, a pin, a topology edit)
+    /// reheats the layout. `None` reheats all of it to [`reheat`](Self::reheat), as
+    /// d3-force does: the whole picture reorganises, and nodes far from the edit move as
+    /// much as near ones. `Some(h)` heats only what was touched and its neighbours up to
+    /// `h` hops away, each hop half as hot as the one before (a dragged or thrown node
+    /// itself stays cold, so a throw coasts and its springs bring it back gently): the
+    /// forces on a heated node are multiplied by its heat over the layout's, which
+    /// speeds it toward the same balance the rest of the layout rests at, and the nodes
+    /// beyond stay asleep where they were. The heat of each node cools on the same
+    /// schedule. Larger reaches let an edit reorganise more of its surroundings and
+    /// wake more nodes; a host that wants a full relayout calls
+    /// [`RapierLayout::reheat`](crate::RapierLayout::reheat). Only forces of the
+    /// layout's own are multiplied: with
+    /// [`SpringModel::Joints`](crate::SpringModel::Joints) springs keep the layout's
+    /// heat. Values are counted from the first build on; a configuration or gravity
+    /// change reheats all of the layout either way. Default: `None`
+    /// ([`RapierLayoutConfig::force_directed`](crate::RapierLayoutConfig::force_directed)
+    /// uses `Some(1)`).
+    pub reheat_hops: Option<u32>,
+    /// With [`reheat_hops`](Self::reheat_hops), the share of their full strength the
+    /// springs of a dragged or thrown node pull it with once it is let go (its heat is
+    /// set to the heat at which springs have this share, and cools from there). Higher
+    /// draws a throw back sooner and flies it less far; lower lets it coast further and
+    /// come back more slowly, and too low leaves it where it landed when the schedule
+    /// ends. Measured on `les_miserables` and `karate` (README), throws of 1,800
+    /// units/s: with `force_directed()`, 0.01 flies them 135 and 176 units on and
+    /// draws them back at up to 540 units/s, 0.05 flies them 24 and 38 units and
+    /// brings them back at up to 1,690; with `force_directed_fast()` (springs that fade
+    /// with the heat itself, no link bias) 0.01 flies them 451 and 328 units and leaves
+    /// them there (edge-length CV 0.23 to 0.50 on karate), 0.05 flies them 134 and 86
+    /// units and draws them back within 3 s (CV 0.23 to 0.25). Values outside `[0, 1]`
+    /// are clamped, non-finite ones count as 0 (the floor). Default: `0.01`
+    /// ([`RapierLayoutConfig::force_directed_fast`](crate::RapierLayoutConfig::force_directed_fast)
+    /// uses `0.05`).
+    pub coasting_spring_scale: f32,
 }
 
 impl Default for Cooling {
@@ -125,6 +161,8 @@ impl Default for Cooling {
             stretch_limit: None,
             hot_contact_frequency: None,
             first_contact_heat: None,
+            reheat_hops: None,
+            coasting_spring_scale: 0.01,
         }
     }
 }
@@ -157,6 +195,20 @@ impl Cooling {
         } else {
             alpha
         }
+    }
+
+    /// The heat a dragged or thrown node takes after a local disturbance: the heat at
+    /// which springs have [`coasting_spring_scale`](Self::coasting_spring_scale) of
+    /// their strength, within `[floor, 1]`.
+    pub(crate) fn coasting_heat(&self) -> f32 {
+        let scale = finite_or(self.coasting_spring_scale, 0.0).clamp(0.0, 1.0);
+        let exponent = self.spring_exponent;
+        let heat = if exponent.is_finite() && exponent > 0.0 && exponent < 1.0 {
+            scale.powf(1.0 / exponent)
+        } else {
+            scale
+        };
+        heat.clamp(self.floor(), 1.0)
     }
 
     /// The contacts' natural frequency at heat `alpha`, given the frequency `cold` they

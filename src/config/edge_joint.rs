@@ -1,6 +1,7 @@
-//! What an edge becomes in the physics world ([`EdgeJoint`]) and which body kind a
-//! node gets ([`BodyKindPolicy`]). The rapier joints themselves are built in
-//! `world::rapier_joint`.
+//! What an edge becomes in the physics world ([`EdgeJoint`]), how its spring is solved
+//! ([`SpringModel`]) and which body kind a node gets ([`BodyKindPolicy`]). The rapier
+//! joints themselves are built in `world::rapier_joint`, springs applied as forces in
+//! `forces/springs.rs`.
 
 use serde::{Deserialize, Serialize};
 
@@ -86,4 +87,31 @@ pub enum BodyKindPolicy {
     /// Every node is kinematic: the layout only follows the host (no physics motion,
     /// no deltas). Useful to keep a world for contact queries without simulating.
     AllKinematic,
+}
+
+/// How [`EdgeJoint::Spring`] edges are solved. Ropes and rods are rapier joints either
+/// way.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum SpringModel {
+    /// Each spring is a rapier spring joint, solved implicitly with the contacts in
+    /// rapier's constraint solver, so a stretched spring and a contact that resists it
+    /// are solved together. A connected graph is one rapier island: anything that wakes
+    /// one node wakes them all. Rapier solves this joint kind one at a time (it has no
+    /// SIMD path for it), which makes springs a large part of a big graph's step.
+    #[default]
+    Joints,
+    /// Springs are forces of the layout's own, evaluated for every edge in one loop per
+    /// substep beside the other body forces. Each body's total force is then divided by
+    /// `1 + (dt² k + dt c) / m`, with `k` and `c` the stiffness and damping of its
+    /// springs: an implicit Euler step on the body's own springs, so springs as stiff as
+    /// the timestep resolves stay stable, and a body still rests where its forces
+    /// balance. Rapier then sees no joint between nodes: its islands are groups of nodes
+    /// in contact, so a disturbance wakes only the nodes it reaches, and the spring
+    /// loop costs a few nanoseconds per edge. The price: springs and contacts are no
+    /// longer solved together (a spring pressing two disks into each other is resolved
+    /// over a few steps by the contact), and a spring's pull on its two ends comes one
+    /// substep late to rapier's solver. [`RapierSceneWorld::joint_count`](crate::RapierSceneWorld::joint_count)
+    /// still counts these springs;
+    /// [`rapier_joint_count`](crate::RapierSceneWorld::rapier_joint_count) does not.
+    Forces,
 }

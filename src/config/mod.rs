@@ -17,8 +17,8 @@ mod presets;
 pub(crate) mod solver;
 
 use cooling::Cooling;
-pub use edge_joint::{BodyKindPolicy, EdgeJoint};
-pub use solver::{Accuracy, ContactSoftness, SolverSettings};
+pub use edge_joint::{BodyKindPolicy, EdgeJoint, SpringModel};
+pub use solver::{Accuracy, ContactModel, ContactSoftness, SolverSettings};
 
 /// What to do when the topology hash changes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -48,6 +48,11 @@ pub struct RapierLayoutConfig {
     /// motion. Default: [`EdgeJoint::default`], a spring of rest length 100 and
     /// stiffness 50.
     pub edge_joint: EdgeJoint,
+    /// How spring edges are solved: as rapier joints, or as forces of the layout's own
+    /// ([`SpringModel`], where the trade is described). Changing it between calls
+    /// replaces every joint in place; bodies keep their motion. Default:
+    /// [`SpringModel::Joints`].
+    pub spring_model: SpringModel,
     /// Body kinds for pinned and free nodes: anchors, kinematic pins, or nothing
     /// simulated at all ([`BodyKindPolicy`]). Default: [`BodyKindPolicy::PinnedStatic`].
     pub body_kind_policy: BodyKindPolicy,
@@ -75,6 +80,11 @@ pub struct RapierLayoutConfig {
     /// Whether nodes collide. Off, the world holds no colliders at all (bodies get their
     /// mass directly), which saves the broad and narrow phases. Default: `true`.
     pub collisions: bool,
+    /// Who keeps nodes apart: rapier's colliders or the layout's own disk separation
+    /// ([`ContactModel`], where the trade is described). Changing it between calls
+    /// rebuilds the world: every body starts again at rest. Default:
+    /// [`ContactModel::Rapier`].
+    pub contact_model: ContactModel,
     /// Whether the world records contact begin/end events for
     /// [`RapierLayout::drain_events`](crate::RapierLayout::drain_events). Off, no event
     /// is produced or stored. Default: `false`.
@@ -137,6 +147,29 @@ pub struct RapierLayoutConfig {
     /// are explicit forces stiffer than the step resolves); not finite counts as 0.
     /// Default: `0.0` ([`RapierLayoutConfig::force_directed`] uses `1.0`).
     pub link_bias: f32,
+    /// Linear damping, per second, of a thrown node from its release until it turns
+    /// back toward where it was let go (or slows below
+    /// [`rest_speed`](Self::rest_speed)), instead of the material's; `None` keeps the
+    /// material's throughout. A layout damped as heavily as d3-force (20 per second in
+    /// [`force_directed`](Self::force_directed)) stops a throw of 1,800 units/s within
+    /// 90 units; with little damping in flight the node flies until its springs turn it,
+    /// and the material's damping then brings it back without overshoot. Lower flies
+    /// further; the material's own value turns the feature off. Costs nothing but a
+    /// check per thrown node per call. Default: `None`
+    /// ([`RapierLayoutConfig::force_directed`] uses `1.0`).
+    pub flight_damping: Option<f32>,
+}
+
+impl RapierLayoutConfig {
+    /// Whether nodes collide through the layout's own disk separation.
+    pub(crate) fn separates_disks(&self) -> bool {
+        self.collisions && self.contact_model == ContactModel::Disks && !self.contact_events
+    }
+
+    /// Whether nodes collide through rapier's colliders.
+    pub(crate) fn rapier_colliders(&self) -> bool {
+        self.collisions && !self.separates_disks()
+    }
 }
 
 impl Default for RapierLayoutConfig {
@@ -144,6 +177,7 @@ impl Default for RapierLayoutConfig {
         Self {
             default_radius: 16.0,
             edge_joint: EdgeJoint::default(),
+            spring_model: SpringModel::Joints,
             body_kind_policy: BodyKindPolicy::PinnedStatic,
             material: PhysicsMaterial::default(),
             max_frame_time: 0.25,
@@ -151,6 +185,7 @@ impl Default for RapierLayoutConfig {
             length_unit: 100.0,
             max_speed: 40_000.0,
             collisions: true,
+            contact_model: ContactModel::Rapier,
             contact_events: false,
             topology_update: TopologyUpdate::Incremental,
             accuracy: Accuracy::Balanced,
@@ -161,6 +196,7 @@ impl Default for RapierLayoutConfig {
             cooling: None,
             contact_softness: ContactSoftness::default(),
             link_bias: 0.0,
+            flight_damping: None,
         }
     }
 }

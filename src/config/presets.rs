@@ -3,15 +3,17 @@
 //! physical units. The plain [`RapierLayoutConfig::default`] lives with the fields.
 
 use crate::config::cooling::Cooling;
-use crate::config::edge_joint::EdgeJoint;
-use crate::config::solver::{Accuracy, ContactSoftness};
+use crate::config::edge_joint::{EdgeJoint, SpringModel};
+use crate::config::solver::{Accuracy, ContactModel, ContactSoftness};
 use crate::config::RapierLayoutConfig;
 use crate::forces::many_body::Repulsion;
 use crate::world::bindings::PhysicsMaterial;
 
 impl RapierLayoutConfig {
     /// A configuration for laying graphs out: d3-force's default forces converted to
-    /// physical units, on colliding disks, cooled to rest in bounded time.
+    /// physical units, on colliding disks, cooled to rest in bounded time, with a feel of
+    /// its own: a throw flies on and is drawn back, and an edit or a drag heats only the
+    /// nodes near it.
     ///
     /// d3-force moves nodes in units per tick; at 60 ticks per second and the default
     /// node mass (density 0.005 × π 16² ≈ 4.0) its forces become:
@@ -21,45 +23,52 @@ impl RapierLayoutConfig {
     ///   damping. 7,200 is what a 1/60 s step resolves between two default nodes
     ///   ([`max_resolved_stiffness`](crate::max_resolved_stiffness)), d3's link at full
     ///   heat. d3's full share (exponent 1) leaves hub edges too soft here, because
-    ///   physical springs pass a subtree's whole pull on to its root edge;
+    ///   physical springs pass a subtree's whole pull on to its root edge. The springs
+    ///   are forces of the layout's own ([`SpringModel::Forces`]): one loop over the
+    ///   edges, where rapier solves spring joints one at a time;
     /// - d3's link bias, the end with fewer neighbours pulled harder
     ///   ([`link_bias`](Self::link_bias) 1);
     /// - many-body strength −30: [`Repulsion`] of strength 430,000 (`30 × m × 60²`),
     ///   theta 0.9, with a gentle centre pull;
     /// - velocity decay 0.4 per tick would be linear damping 40 per second; half of it,
     ///   20, lets tangles slip free before the layout freezes;
-    /// - alpha decay: a [`Cooling`] schedule over 8 s (d3 takes 5 s; the longer schedule
-    ///   untangles trees and grids further before they freeze) that scales repulsion by
-    ///   the heat and springs by `heat^0.7` ([`Cooling::spring_exponent`]), so edges draw
-    ///   toward their rest length as the layout cools, unless the springs' median length
-    ///   is over twice their rest length ([`Cooling::stretch_limit`] 2; fully like the
-    ///   heat from four times, blended in between): such a graph cannot reach its rest
-    ///   lengths, and springs that outlast repulsion would only pack it into a creeping
-    ///   jam of contacts;
-    /// - collide at the node radius: firm contacts (240 Hz, ζ = 1, [`ContactSoftness`])
-    ///   that no spring presses through. On the first unfolding only, they are left out
-    ///   until the heat falls to 0.3 ([`Cooling::first_contact_heat`]) and then firm up
-    ///   from soft ([`Cooling::hot_contact_frequency`] 5 Hz): a fresh scatter collapsing
-    ///   into thousands of contact pairs would cost most of the step (d3's collide, too,
-    ///   is weak next to its other forces early on). Later reheats keep them firm, so a
-    ///   drag always pushes;
-    /// - one solver iteration of three PGS passes ([`Accuracy::Custom`] `1, 3, 1`): at
-    ///   the end of the schedule the springs press a large graph together into a jammed
-    ///   packing, and a single pass ([`Accuracy::Fast`]) leaves up to a hundred slightly
-    ///   overlapping pairs on `n1000_e2500` and is slower on `n10000_e25000` (68 ms per
-    ///   step: under-resolved contacts make more pairs). Three PGS passes resolve them
-    ///   as well as [`Accuracy::Balanced`]'s two solver iterations, without the second
-    ///   constraint update and position integration: about 7 % less per step on
-    ///   `n1000_e2500` (1.22 against 1.30 ms) and `n10000_e25000`, with no overlaps,
-    ///   for a little more spread on karate and trees (README).
+    /// - alpha decay: a [`Cooling`] schedule over 4.5 s (d3 takes 5 s) that scales
+    ///   repulsion by the heat and springs by `heat^0.7` ([`Cooling::spring_exponent`]),
+    ///   so edges draw toward their rest length as the layout cools, unless the springs'
+    ///   median length is over twice their rest length ([`Cooling::stretch_limit`] 2;
+    ///   fully like the heat from four times, blended in between): such a graph cannot
+    ///   reach its rest lengths, and springs that outlast repulsion would only pack it
+    ///   into overlaps (6,257 overlapping pairs at rest on `n10000_e25000` without the
+    ///   limit, 89 with it);
+    /// - collide at the node radius: the layout's own disk separation
+    ///   ([`ContactModel::Disks`]: soft contacts on a uniform grid, firm at 240 Hz, ζ = 1,
+    ///   [`ContactSoftness`]) instead of rapier's pair bookkeeping, and the overlaps
+    ///   left when the schedule ends projected apart before the world halts. On the
+    ///   first unfolding only, contacts are left out until the heat falls to 0.3
+    ///   ([`Cooling::first_contact_heat`]) and then firm up from soft
+    ///   ([`Cooling::hot_contact_frequency`] 5 Hz), so a fresh scatter spreads instead
+    ///   of jamming. Later reheats keep them firm, so a drag always pushes;
+    /// - one solver iteration of three passes ([`Accuracy::Custom`] `1, 3, 1`): with
+    ///   the disk separation, the passes over the pairs before and after each step.
+    ///
+    /// And beyond d3-force, for the feel:
+    /// - a disturbance (drag, release, host move, pin, edit) heats only the touched
+    ///   nodes and their neighbours ([`Cooling::reheat_hops`] 1), so on `les_miserables`
+    ///   the nodes three or more hops away move less than a unit (d3's whole-graph
+    ///   reheat, `reheat_hops: None`, moves them about 100 units); a dragged or thrown
+    ///   node's springs pull with 1 % of their strength after the release
+    ///   ([`Cooling::coasting_spring_scale`]);
+    /// - a thrown node is damped at 1/s until it turns back
+    ///   ([`flight_damping`](Self::flight_damping) 1): a throw of 1,800 units/s flies
+    ///   135 to 180 units further and is drawn back at up to about 550 units/s.
     ///
     /// Every shipped graph comes to rest (every body asleep, or halted at the end of the
-    /// schedule) within 9 s of simulated time after the last disturbance. Contacts
-    /// dominate the step of large random graphs (27.4 ms per step over frames 30–270
-    /// at 10,000 nodes, 24 ms averaged until rest); for thousands of nodes
-    /// [`force_directed_fast`](Self::force_directed_fast) takes 11 ms. The damping
-    /// is d3's: a throw stops within a few frames. For a physical feel (coasting
-    /// throws), start from [`RapierLayoutConfig::default`].
+    /// schedule) within 300 frames of the last disturbance, with no overlapping pair on
+    /// the graphs of up to 1,000 nodes (README: edge-length spread, frames and step
+    /// times beside d3-force's). On `n10000_e25000` a step takes 15 ms at the median and
+    /// 18 ms at the 95th percentile, under a fifth of d3-force's tick on the same
+    /// machine; [`force_directed_fast`](Self::force_directed_fast) takes 7 ms without
+    /// collisions.
     ///
     /// # Example
     /// ```
@@ -79,17 +88,21 @@ impl RapierLayoutConfig {
                 linear_damping: 20.0,
                 ..defaults.material
             },
+            spring_model: SpringModel::Forces,
+            contact_model: ContactModel::Disks,
             repulsion: Some(Repulsion::default()),
             spring_degree_exponent: 0.6,
             cooling: Some(Cooling {
-                duration: 8.0,
+                duration: 4.5,
                 spring_exponent: 0.7,
                 stretch_limit: Some(2.0),
                 hot_contact_frequency: Some(5.0),
                 first_contact_heat: Some(0.3),
+                reheat_hops: Some(1),
                 ..Cooling::default()
             }),
             link_bias: 1.0,
+            flight_damping: Some(1.0),
             contact_softness: ContactSoftness {
                 natural_frequency: 240.0,
                 damping_ratio: 1.0,
@@ -103,15 +116,17 @@ impl RapierLayoutConfig {
         }
     }
 
-    /// [`force_directed`](Self::force_directed) without colliders, with d3's full
-    /// degree share (spring exponent 1) and no link bias: the fastest force-directed
-    /// setting, for graphs of thousands of nodes. Repulsion alone keeps nodes apart, so
-    /// some overlap where springs pull hard (783 pairs on `n1000_e2500`; d3-force leaves
-    /// 347); the stiffer hub springs and the bias of `force_directed()` would press
-    /// twice as many together without contacts. In exchange the broad and narrow
-    /// phases, which dominate the step of a large graph, are gone. Measured on
-    /// `n10000_e25000` (README): 11.2 ms per step over frames 30–270, where
-    /// `force_directed()` takes 27.4 ms.
+    /// [`force_directed`](Self::force_directed) without collisions, with d3's full
+    /// degree share (spring exponent 1), springs that fade with the heat itself and no
+    /// link bias: the fastest force-directed setting, for graphs of thousands of nodes.
+    /// Repulsion alone keeps nodes apart, so some overlap where springs pull hard (824
+    /// pairs on `n1000_e2500`; d3-force leaves 347); the stiffer hub springs and the
+    /// bias of `force_directed()` would press twice as many together without contacts.
+    /// In exchange there is no pair search: measured on `n10000_e25000` (README), 7.1 ms
+    /// per step at the median and 7.4 ms at the 95th percentile, where
+    /// `force_directed()` takes 15.0 and 18.4 ms. Its springs, fading with the heat,
+    /// are weak once the layout rests, so a thrown node's springs pull with 5 % of their
+    /// strength ([`Cooling::coasting_spring_scale`]) to bring it back.
     ///
     /// # Example
     /// ```
@@ -128,6 +143,7 @@ impl RapierLayoutConfig {
             link_bias: 0.0,
             cooling: directed.cooling.map(|cooling| Cooling {
                 spring_exponent: 1.0,
+                coasting_spring_scale: 0.05,
                 ..cooling
             }),
             accuracy: Accuracy::Fast,

@@ -5,9 +5,7 @@
 
 use std::hash::Hash;
 
-use euclid::default::Vector2D;
-
-use super::{BodyForce, ForceContext};
+use super::{BodyForce, ForceContext, ForceSums};
 use crate::config::RapierLayoutConfig;
 use crate::sanitize::finite_or;
 
@@ -23,7 +21,7 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for CenterPull {
         config.repulsion.is_some()
     }
 
-    fn apply(&mut self, frame: &ForceContext<'_, N>, forces: &mut Vec<Vector2D<f32>>) {
+    fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
         let Some(repulsion) = &frame.config.repulsion else {
             return;
         };
@@ -34,7 +32,7 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for CenterPull {
         }
         for (s, &point) in frame.points.iter().enumerate() {
             if frame.pushed[s] {
-                forces[s] -= (point - center) * pull;
+                out.forces[s] -= (point - center) * pull;
             }
         }
     }

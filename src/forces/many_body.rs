@@ -5,11 +5,11 @@
 
 use std::hash::Hash;
 
-use euclid::default::{Point2D, Vector2D};
+use euclid::default::Point2D;
 use serde::{Deserialize, Serialize};
 
 use super::barnes_hut::ManyBody;
-use super::{BodyForce, ForceContext};
+use super::{BodyForce, ForceContext, ForceSums};
 use crate::config::RapierLayoutConfig;
 use crate::sanitize::finite_or;
 
@@ -60,7 +60,7 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for ManyBodyForce {
         config.repulsion.is_some()
     }
 
-    fn apply(&mut self, frame: &ForceContext<'_, N>, forces: &mut Vec<Vector2D<f32>>) {
+    fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
         let Some(repulsion) = &frame.config.repulsion else {
             return;
         };
@@ -69,7 +69,12 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for ManyBodyForce {
         let theta = finite_or(repulsion.theta, 0.0).max(0.0);
         let min_distance = finite_or(repulsion.min_distance, 1.0).max(1e-3);
         // NOTE: writes every entry (others zero), so it must come first in the list.
-        self.tree
-            .forces(strength, theta, min_distance, |s| frame.pushed[s], forces);
+        self.tree.forces(
+            strength,
+            theta,
+            min_distance,
+            |s| frame.pushed[s],
+            &mut out.forces,
+        );
     }
 }

@@ -3,26 +3,35 @@
 //! of [`Forces::default`], the way d3-force's simulation runs its forces.
 //!
 //! - `many_body.rs`: many-body repulsion through the Barnes–Hut tree in `barnes_hut/`;
-//! - `link_bias.rs`: d3-force's uneven share of a spring's pull between its ends;
-//! - `center.rs`: the pull toward the centre.
+//! - `springs.rs`: the edge springs applied as forces, and d3-force's uneven share of a
+//!   spring's pull between its ends (link bias);
+//! - `center.rs`: the pull toward the centre;
+//! - `collide.rs`: the layout's own disk separation (not a force: the velocity changes
+//!   that part disks, worked out after the forces).
 //!
 //! Every body pushes (pinned and dragged ones too); only awake dynamic bodies are pushed.
-//! [`Forces::apply`] sums the forces of one substep into a buffer indexed by world slot
-//! and sets each pushed body's force to its sum. A new force is one file here and one
-//! line in [`Forces::default`].
+//! [`Forces::apply`] sums the forces of one substep into buffers indexed by world slot
+//! and sets each pushed body's force to its sum. A force may also report a stiffness per
+//! body (springs do): the sum on a body of mass `m` is then divided by
+//! `1 + (dt² k + dt c) / m`, an implicit Euler step on the body's own stiffness `k` and
+//! damping `c` (the diagonal of the springs' Jacobian), so springs stiffer than the step
+//! resolves stay stable and the body still comes to rest where its forces balance. A new
+//! force is one file here and one line in [`Forces::default`].
 
 use std::hash::Hash;
 
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::Vector;
 
-use crate::config::RapierLayoutConfig;
+use crate::config::cooling::Cooling;
+use crate::config::{ContactSoftness, RapierLayoutConfig};
 use crate::world::RapierSceneWorld;
 
 pub(crate) mod barnes_hut;
 mod center;
-mod link_bias;
+mod collide;
 pub(crate) mod many_body;
+mod springs;
 
 /// What a force reads on one substep.
 pub(crate) struct ForceContext<'a, N> {
@@ -32,10 +41,101 @@ pub(crate) struct ForceContext<'a, N> {
     pub(crate) config: &'a RapierLayoutConfig,
     /// Every body's position, by world slot.
     pub(crate) points: &'a [Point2D<f32>],
+    /// Every body's velocity, by world slot.
+    pub(crate) velocities: &'a [Vector2D<f32>],
     /// Whether each body (by world slot) is pushed: dynamic and awake.
     pub(crate) pushed: &'a [bool],
     /// The layout's heat under its cooling schedule (1 without one).
     pub(crate) heat: f32,
+    /// The substep's length, in seconds.
+    pub(crate) dt: f32,
+}
+
+/// What one substep reads of every body, by world slot, gathered once.
+#[derive(Debug, Default)]
+pub(crate) struct Bodies {
+    pub(crate) points: Vec<Point2D<f32>>,
+    /// Velocities; after the forces, what they will be from them (pushed bodies).
+    pub(crate) velocities: Vec<Vector2D<f32>>,
+    /// Dynamic and awake: pushed by the forces, and gives way in contacts.
+    pub(crate) pushed: Vec<bool>,
+    /// Where a kinematic body is driven to this substep (its position otherwise).
+    pub(crate) next: Vec<Point2D<f32>>,
+    /// Dynamic but asleep: does not give way until woken.
+    pub(crate) sleeping: Vec<bool>,
+}
+
+impl Bodies {
+    /// Reads every body once.
+    fn gather<N: Clone + Eq + Hash>(&mut self, world: &RapierSceneWorld<N>) {
+        let n = world.slot_count();
+        self.points.clear();
+        self.velocities.clear();
+        self.pushed.clear();
+        self.next.clear();
+        self.sleeping.clear();
+        for s in 0..n {
+            let body = world.body_at(s);
+            let (t, v) = (body.translation(), body.linvel());
+            let p = Point2D::new(t.x, t.y);
+            self.points.push(p);
+            self.velocities.push(Vector2D::new(v.x, v.y));
+            let dynamic = body.is_dynamic();
+            self.pushed.push(dynamic && !body.is_sleeping());
+            self.sleeping.push(dynamic && body.is_sleeping());
+            self.next.push(if body.is_kinematic() {
+                let next = body.next_position().translation;
+                Point2D::new(next.x, next.y)
+            } else {
+                p
+            });
+        }
+    }
+}
+
+/// How the forces on a node scale with its own heat after a local disturbance
+/// ([`Cooling::reheat_hops`](crate::Cooling::reheat_hops)): as they did when the whole
+/// layout was that hot, so a heated neighbourhood replays the schedule that laid it out.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct HeatLaw {
+    /// The layout's heat (1 without a schedule).
+    pub(crate) alpha: f32,
+    pub(crate) cooling: Option<Cooling>,
+    /// The springs' blend from `heat^spring_exponent` toward the heat
+    /// ([`Cooling::stretch_limit`](crate::Cooling::stretch_limit)).
+    pub(crate) blend: f32,
+}
+
+impl HeatLaw {
+    /// The factors on a node's springs and on its other forces for its own heat `own`:
+    /// what its heat gives them over what the layout's gives. `None` for a node no
+    /// hotter than the layout.
+    fn boosts(&self, own: f32) -> Option<(f32, f32)> {
+        let cooling = self.cooling.filter(|_| own > self.alpha)?;
+        let springs = |heat: f32| {
+            let near = cooling.spring_scale(heat);
+            if self.blend > 0.0 {
+                near.powf(1.0 - self.blend) * heat.powf(self.blend)
+            } else {
+                near
+            }
+        };
+        let boost = springs(own) / springs(self.alpha);
+        let boost = if boost.is_finite() { boost } else { 1.0 };
+        Some((boost, own / self.alpha))
+    }
+}
+
+/// What the forces of one substep add up to, by world slot.
+#[derive(Debug, Default)]
+pub(crate) struct ForceSums {
+    /// The force on each body, springs aside.
+    pub(crate) forces: Vec<Vector2D<f32>>,
+    /// The springs' force on each body.
+    pub(crate) springs: Vec<Vector2D<f32>>,
+    /// `dt² k + dt c` of each body's springs applied as forces: what the implicit step
+    /// divides by (with the mass).
+    pub(crate) resistance: Vec<f32>,
 }
 
 /// One force on bodies, applied every substep.
@@ -43,9 +143,9 @@ pub(crate) trait BodyForce<N>: Send + Sync {
     /// Whether `config` asks for this force at all.
     fn is_active(&self, config: &RapierLayoutConfig) -> bool;
 
-    /// Adds this substep's force on every pushed body to `forces` (by world slot; as
-    /// long as the world has bodies).
-    fn apply(&mut self, frame: &ForceContext<'_, N>, forces: &mut Vec<Vector2D<f32>>);
+    /// Adds this substep's force on every pushed body to `out` (by world slot; as long
+    /// as the world has bodies).
+    fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums);
 
     /// Forgets what was cached about a world that is gone.
     fn reset(&mut self) {}
@@ -54,9 +154,9 @@ pub(crate) trait BodyForce<N>: Send + Sync {
 /// The forces of a layout, with the buffers one substep sums them in.
 pub(crate) struct Forces<N> {
     list: Vec<Box<dyn BodyForce<N>>>,
-    points: Vec<Point2D<f32>>,
-    pushed: Vec<bool>,
-    sums: Vec<Vector2D<f32>>,
+    bodies: Bodies,
+    sums: ForceSums,
+    collide: collide::Collide,
 }
 
 impl<N: Clone + Eq + Hash> Default for Forces<N> {
@@ -65,14 +165,14 @@ impl<N: Clone + Eq + Hash> Default for Forces<N> {
         // writes every entry first, the others add to it.
         let list: Vec<Box<dyn BodyForce<N>>> = vec![
             Box::new(many_body::ManyBodyForce::default()),
-            Box::new(link_bias::LinkBias::default()),
+            Box::new(springs::SpringForce::default()),
             Box::new(center::CenterPull),
         ];
         Self {
             list,
-            points: Vec::new(),
-            pushed: Vec::new(),
-            sums: Vec::new(),
+            bodies: Bodies::default(),
+            sums: ForceSums::default(),
+            collide: collide::Collide::default(),
         }
     }
 }
@@ -86,9 +186,10 @@ impl<N> std::fmt::Debug for Forces<N> {
 }
 
 impl<N: Clone + Eq + Hash> Forces<N> {
-    /// Whether `config` asks for any force on bodies.
+    /// Whether `config` asks for any force on bodies, or for the layout's own disk
+    /// separation.
     pub(crate) fn any_active(&self, config: &RapierLayoutConfig) -> bool {
-        self.list.iter().any(|force| force.is_active(config))
+        config.separates_disks() || self.list.iter().any(|force| force.is_active(config))
     }
 
     /// Forgets every force's cache (the world was dropped or built anew).
@@ -98,45 +199,109 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         }
     }
 
-    /// Sets every awake dynamic body's force to the sum of the active forces at `heat`.
-    /// Skipped while nothing is awake, so a resting layout stays cheap.
+    /// Sets every awake dynamic body's force to the sum of the active forces at `heat`
+    /// for a substep of `dt` seconds, then (with the layout's own disk separation) the
+    /// velocity changes that keep disks apart. Skipped while nothing is awake, so a
+    /// resting layout stays cheap. Call [`settle`](Self::settle) after the step.
     pub(crate) fn apply(
         &mut self,
         world: &mut RapierSceneWorld<N>,
         config: &RapierLayoutConfig,
-        heat: f32,
+        law: HeatLaw,
+        contacts: ContactSoftness,
+        dt: f32,
     ) {
-        if world.awake_body_count() == 0 {
+        if !world.may_move() {
             return;
         }
+        let heat = law.alpha;
         let n = world.slot_count();
-        self.points.clear();
-        self.points.extend((0..n).map(|s| world.position_at(s)));
-        self.pushed.clear();
-        self.pushed.extend((0..n).map(|s| {
-            let body = world.body_at(s);
-            body.is_dynamic() && !body.is_sleeping()
-        }));
-        self.sums.clear();
-        self.sums.resize(n, Vector2D::zero());
+        self.bodies.gather(world);
+        self.sums.forces.clear();
+        self.sums.forces.resize(n, Vector2D::zero());
+        self.sums.springs.clear();
+        self.sums.springs.resize(n, Vector2D::zero());
+        self.sums.resistance.clear();
+        self.sums.resistance.resize(n, 0.0);
         let frame = ForceContext {
             world,
             config,
-            points: &self.points,
-            pushed: &self.pushed,
+            points: &self.bodies.points,
+            velocities: &self.bodies.velocities,
+            pushed: &self.bodies.pushed,
             heat,
+            dt,
         };
         for force in &mut self.list {
             if force.is_active(config) {
                 force.apply(&frame, &mut self.sums);
             }
         }
-        for (s, f) in self.sums.iter().enumerate() {
-            if self.pushed[s] && f.is_finite() {
-                let body = world.body_at_mut(s);
+        for (s, f) in self.sums.forces.iter_mut().enumerate() {
+            if !self.bodies.pushed[s] {
+                continue;
+            }
+            let mut resistance = self.sums.resistance[s];
+            match law.boosts(world.host_at(s).heat) {
+                None => *f += self.sums.springs[s],
+                Some((springs, others)) => {
+                    // Heated by a local disturbance.
+                    *f = *f * others + self.sums.springs[s] * springs;
+                    resistance *= springs;
+                }
+            }
+            if resistance > 0.0 {
+                let mass = world.mass_at(s);
+                *f *= mass / (mass + resistance);
+            }
+            if !f.is_finite() {
+                // Left as it was: the body keeps the force it had.
+                self.bodies.pushed[s] = false;
+            }
+        }
+        let separate = config.separates_disks() && world.contacts_enabled();
+        if separate {
+            for (s, v) in self.bodies.velocities.iter_mut().enumerate() {
+                if self.bodies.pushed[s] {
+                    // The velocity this substep's force gives.
+                    *v += self.sums.forces[s] * (dt / world.mass_at(s));
+                }
+            }
+            self.collide.resolve(world, &self.bodies, contacts, dt);
+        }
+        for s in 0..n {
+            let change = if separate {
+                self.collide.change(s)
+            } else {
+                Vector2D::zero()
+            };
+            if !self.bodies.pushed[s] && change == Vector2D::zero() {
+                continue;
+            }
+            let body = world.body_at_mut(s);
+            if self.bodies.pushed[s] {
+                let f = self.sums.forces[s];
                 body.reset_forces(false);
                 body.add_force(Vector::new(f.x, f.y), false);
             }
+            if change != Vector2D::zero() && body.is_dynamic() {
+                let v = body.linvel() + Vector::new(change.x, change.y);
+                if v.is_finite() {
+                    // Without waking: the bodies that gave way are awake already.
+                    body.set_linvel(v, false);
+                }
+            }
         }
+    }
+
+    /// Before the world halts: projects the overlaps the disk separation still holds
+    /// apart on positions. Returns the largest distance a body moved (world units).
+    pub(crate) fn part_overlaps(&mut self, world: &mut RapierSceneWorld<N>) -> f32 {
+        self.collide.part_overlaps(world)
+    }
+
+    /// After the step: what the disk separation does once the bodies have moved.
+    pub(crate) fn settle(&mut self, world: &mut RapierSceneWorld<N>, dt: f32) {
+        self.collide.relax(world, dt);
     }
 }

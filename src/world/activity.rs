@@ -70,6 +70,17 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         self.halt_dynamic_bodies()
     }
 
+    /// Puts every dynamic body to sleep (rapier's `RigidBody::sleep`: it stays asleep
+    /// until something wakes it). O(n).
+    pub(crate) fn sleep_dynamic_bodies_now(&mut self) {
+        for s in 0..self.slots.len() {
+            let body = self.body_at_mut(s);
+            if body.is_dynamic() {
+                body.sleep();
+            }
+        }
+    }
+
     /// Wakes every sleeping dynamic body. Returns how many were woken. O(n).
     pub(crate) fn wake_dynamic_bodies(&mut self) -> usize {
         let mut woken = 0;
@@ -121,6 +132,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
                 if let Some(body) = self.bodies.get_mut(handle) {
                     body.wake_up(true);
                     woken += 1;
+                    self.touched = true;
                 }
             }
         }

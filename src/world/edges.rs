@@ -8,7 +8,7 @@ use std::hash::Hash;
 use rapier2d::prelude::GenericJoint;
 
 use super::rapier_joint::{max_resolved_stiffness, rapier_joint, scaled_spring};
-use super::slot::{joint_key, JointSlot};
+use super::slot::{joint_key, JointSlot, SpringView};
 use super::RapierSceneWorld;
 use crate::config::EdgeJoint;
 use crate::world::bindings::EdgeJointSpec;
@@ -41,7 +41,9 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         let Some(joint) = self.joint_data(ia, ib, kind, self.spring_scale.applied) else {
             return false;
         };
-        let handle = self.impulse_joints.insert(body_a, body_b, joint, true);
+        let handle = self
+            .in_rapier(kind)
+            .then(|| self.impulse_joints.insert(body_a, body_b, joint, true));
         self.joint_index.insert(key, self.joints.len() as u32);
         self.joints.push(JointSlot {
             key,
@@ -95,11 +97,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             };
             match built {
                 Some(data) => {
-                    let slot = &mut self.joints[i];
-                    slot.kind = kind;
-                    if let Some(joint) = self.impulse_joints.get_mut(slot.handle, true) {
-                        joint.data = data;
-                    }
+                    self.rebuild_joint_at(i, kind, data);
                     i += 1;
                 }
                 None => self.remove_joint_at(i, true),
@@ -130,8 +128,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         self.version += 1;
         let removed = self.joints.swap_remove(i);
         self.joint_index.remove(&removed.key);
-        if remove_from_rapier {
-            self.impulse_joints.remove(removed.handle, true);
+        if let Some(handle) = removed.handle.filter(|_| remove_from_rapier) {
+            self.impulse_joints.remove(handle, true);
         }
         if let Some(moved) = self.joints.get(i) {
             self.joint_index.insert(moved.key, i as u32);
@@ -155,7 +153,9 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     pub fn clear_edge_joints(&mut self) {
         self.version += 1;
         for joint in self.joints.drain(..) {
-            self.impulse_joints.remove(joint.handle, true);
+            if let Some(handle) = joint.handle {
+                self.impulse_joints.remove(handle, true);
+            }
         }
         self.joint_index.clear();
     }
@@ -191,16 +191,25 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         Some(self.joints[i as usize].kind)
     }
 
-    /// Every spring joint as `(slot a, slot b, rest length, stiffness, stiffness cap)`,
-    /// in joint order: the stiffness as inserted (before the spring scale), the cap what
-    /// the joint timestep resolves for the two bodies. Valid until
+    /// The two bodies' slots of every joint, in joint order. Valid until
     /// [`version`](Self::version) changes.
-    pub(crate) fn springs(&self) -> impl Iterator<Item = (usize, usize, f32, f32, f32)> + '_ {
+    pub(crate) fn joint_ends(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+        self.joints.iter().filter_map(|joint| {
+            Some((
+                *self.index.get(&joint.a)? as usize,
+                *self.index.get(&joint.b)? as usize,
+            ))
+        })
+    }
+
+    /// Every spring, rapier joint or forces, in joint order. Valid until
+    /// [`version`](Self::version) changes.
+    pub(crate) fn springs(&self) -> impl Iterator<Item = SpringView> + '_ {
         self.joints.iter().filter_map(|joint| {
             let EdgeJoint::Spring {
                 rest_length,
                 stiffness,
-                ..
+                damping,
             } = joint.kind
             else {
                 return None;
@@ -211,8 +220,87 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             );
             let (ma, mb) = (self.slots[a].mass, self.slots[b].mass);
             let cap = max_resolved_stiffness(ma * mb / (ma + mb), self.joint_dt);
-            Some((a, b, rest_length, stiffness, cap))
+            Some(SpringView {
+                a,
+                b,
+                rest_length,
+                stiffness,
+                damping,
+                cap,
+            })
         })
+    }
+
+    /// Whether a joint of `kind` is a rapier joint in this world (every kind but a spring
+    /// applied as forces).
+    fn in_rapier(&self, kind: &EdgeJoint) -> bool {
+        !(self.spring_forces && matches!(kind, EdgeJoint::Spring { .. }))
+    }
+
+    /// Gives joint `i` the kind `kind`, built as `data`: the rapier joint is re-tuned in
+    /// place when it stays one, inserted or removed when the kind moves between rapier
+    /// and forces.
+    fn rebuild_joint_at(&mut self, i: usize, kind: EdgeJoint, data: GenericJoint) {
+        let wanted = self.in_rapier(&kind);
+        let slot = &self.joints[i];
+        let handle = match (slot.handle, wanted) {
+            (Some(handle), true) => {
+                if let Some(joint) = self.impulse_joints.get_mut(handle, true) {
+                    joint.data = data;
+                }
+                Some(handle)
+            }
+            (Some(handle), false) => {
+                self.impulse_joints.remove(handle, true);
+                None
+            }
+            (None, true) => {
+                let bodies = (self.index.get(&slot.a), self.index.get(&slot.b));
+                match bodies {
+                    (Some(&ia), Some(&ib)) => {
+                        let (ba, bb) = (self.slots[ia as usize].body, self.slots[ib as usize].body);
+                        Some(self.impulse_joints.insert(ba, bb, data, true))
+                    }
+                    _ => None,
+                }
+            }
+            (None, false) => None,
+        };
+        let slot = &mut self.joints[i];
+        slot.kind = kind;
+        slot.handle = handle;
+    }
+
+    /// Applies springs as forces of the layout's own (`true`) or as rapier joints
+    /// (`false`), moving the existing springs in place; bodies keep their motion. See
+    /// [`SpringModel`](crate::SpringModel).
+    pub fn set_springs_as_forces(&mut self, forces: bool) {
+        if forces == self.spring_forces {
+            return;
+        }
+        self.spring_forces = forces;
+        self.version += 1;
+        for i in 0..self.joints.len() {
+            let kind = self.joints[i].kind;
+            if !matches!(kind, EdgeJoint::Spring { .. }) {
+                continue;
+            }
+            let (Some(&ia), Some(&ib)) = (
+                self.index.get(&self.joints[i].a),
+                self.index.get(&self.joints[i].b),
+            ) else {
+                continue;
+            };
+            if let Some(data) = self.joint_data(ia, ib, &kind, self.spring_scale.applied) {
+                self.rebuild_joint_at(i, kind, data);
+            }
+        }
+    }
+
+    /// Whether springs are applied as forces (see
+    /// [`set_springs_as_forces`](Self::set_springs_as_forces)).
+    pub fn springs_as_forces(&self) -> bool {
+        self.spring_forces
     }
 
     /// The rapier joint for `kind` between the bodies in slots `a` and `b`: springs

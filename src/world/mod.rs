@@ -143,6 +143,10 @@ pub struct RapierSceneWorld<N> {
     /// Bumped by every change to bodies, joints, masses or the joint timestep, so caches
     /// over them (the link bias) know when to rebuild.
     version: u64,
+    /// Springs are applied as forces of the layout's own instead of rapier joints.
+    spring_forces: bool,
+    /// A body was inserted or accessed to change since the last step.
+    touched: bool,
     /// Whether colliders take part in the simulation (see
     /// [`set_contacts_enabled`](RapierSceneWorld::set_contacts_enabled)).
     contacts_enabled: bool,
@@ -221,6 +225,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             joint_dt: IntegrationParameters::default().dt,
             version: 0,
             contacts_enabled: true,
+            spring_forces: false,
+            touched: false,
         }
     }
 
@@ -239,8 +245,15 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         self.colliders.len()
     }
 
-    /// Number of joints.
+    /// Number of edge joints: one per edge the world models a joint for, whether a rapier
+    /// joint or a spring applied as forces ([`SpringModel`](crate::SpringModel)).
     pub fn joint_count(&self) -> usize {
+        self.joints.len()
+    }
+
+    /// Number of rapier joints: [`joint_count`](Self::joint_count) without the springs
+    /// applied as forces.
+    pub fn rapier_joint_count(&self) -> usize {
         self.impulse_joints.len()
     }
 
@@ -275,6 +288,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     fn body_mut(&mut self, node: &N) -> Option<&mut RigidBody> {
         let slot = self.slot_of(node)?;
+        self.touched = true;
         self.bodies.get_mut(self.slots[slot].body)
     }
 
@@ -283,7 +297,15 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     }
 
     pub(crate) fn body_at_mut(&mut self, slot: usize) -> &mut RigidBody {
+        self.touched = true;
         &mut self.bodies[self.slots[slot].body]
+    }
+
+    /// Whether any body may move in the next step: rapier simulates some, or one was
+    /// inserted, woken or changed since the last step (rapier counts those only once it
+    /// steps).
+    pub(crate) fn may_move(&self) -> bool {
+        self.touched || self.awake_body_count() > 0
     }
 
     /// Number of slots (one per body), the length of every per-slot buffer.

@@ -101,6 +101,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         });
         self.next_serial += 1;
         self.version += 1;
+        self.touched = true;
         true
     }
 

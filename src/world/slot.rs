@@ -49,6 +49,10 @@ pub(crate) struct HostSync {
     /// The last sync left this body dynamic and free (not dragged, pinned or frozen):
     /// while the host keeps the position it was told, the next sync has nothing to do.
     pub(crate) synced: bool,
+    /// The node's own heat after a local disturbance
+    /// ([`Cooling::reheat_hops`](crate::Cooling::reheat_hops)), or 0 while it has the
+    /// layout's.
+    pub(crate) heat: f32,
 }
 
 impl HostSync {
@@ -63,6 +67,7 @@ impl HostSync {
             drag_velocity: Vector2D::zero(),
             fresh: true,
             synced: false,
+            heat: 0.0,
         }
     }
 }
@@ -71,11 +76,26 @@ impl HostSync {
 #[derive(Clone, Debug)]
 pub(crate) struct JointSlot<N> {
     pub(crate) key: (u64, u64),
-    pub(crate) handle: ImpulseJointHandle,
+    /// The rapier joint, or `None` for a spring applied as forces
+    /// ([`SpringModel::Forces`](crate::SpringModel::Forces)).
+    pub(crate) handle: Option<ImpulseJointHandle>,
     pub(crate) a: N,
     pub(crate) b: N,
     /// What the joint was built as: a re-tune to the same kind is skipped.
     pub(crate) kind: EdgeJoint,
+}
+
+/// One spring as the forces read it: its two bodies' slots, its parameters as inserted
+/// (before the world's spring scale) and the stiffness the joint timestep resolves for
+/// the two bodies ([`max_resolved_stiffness`](crate::max_resolved_stiffness)).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SpringView {
+    pub(crate) a: usize,
+    pub(crate) b: usize,
+    pub(crate) rest_length: f32,
+    pub(crate) stiffness: f32,
+    pub(crate) damping: f32,
+    pub(crate) cap: f32,
 }
 
 /// The key of the joint between the nodes of serials `a` and `b`, in either order.
@@ -118,6 +138,11 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// Moves the anchor of the node in `slot` (what `rebase_initial_position` does by id).
     pub(crate) fn set_anchor_at(&mut self, slot: usize, anchor: Point2D<f32>) {
         self.slots[slot].anchor = anchor;
+    }
+
+    /// The mass of the body in `slot`.
+    pub(crate) fn mass_at(&self, slot: usize) -> f32 {
+        self.slots[slot].mass
     }
 
     /// The shape of the node in `slot`.

@@ -20,6 +20,8 @@ pub(crate) struct SpringScale {
     pub(super) limit: f32,
     /// The factor every spring has now.
     pub(super) applied: f32,
+    /// How far the factor went from `near` toward `far` (0 to 1), by the median stretch.
+    pub(super) blend: f32,
     /// [`version`](RapierSceneWorld::version) when the median stretch was last read: an
     /// edit re-reads it even at unchanged factors.
     pub(super) version: u64,
@@ -32,6 +34,7 @@ impl Default for SpringScale {
             far: 1.0,
             limit: f32::INFINITY,
             applied: 1.0,
+            blend: 0.0,
             version: 0,
         }
     }
@@ -123,6 +126,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         } else {
             near
         };
+        self.spring_scale.blend = blend;
         if scale.to_bits() == last.applied.to_bits() {
             return 0;
         }
@@ -132,13 +136,18 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             if !matches!(joint.kind, EdgeJoint::Spring { .. }) {
                 continue;
             }
+            let Some(handle) = joint.handle else {
+                // A spring applied as forces reads the factor when it pulls.
+                changed += 1;
+                continue;
+            };
             let (Some(&ia), Some(&ib)) = (self.index.get(&joint.a), self.index.get(&joint.b))
             else {
                 continue;
             };
             if let (Some(data), Some(rapier)) = (
                 self.joint_data(ia, ib, &joint.kind, scale),
-                self.impulse_joints.get_mut(joint.handle, false),
+                self.impulse_joints.get_mut(handle, false),
             ) {
                 rapier.data = data;
                 changed += 1;
@@ -153,10 +162,10 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             .springs()
             // A rest length that is not finite and positive builds a joint of rest 0
             // (infinitely stretched): left out, as it says nothing about the layout.
-            .filter(|&(_, _, rest_length, _, _)| rest_length.is_finite() && rest_length > 0.0)
-            .filter_map(|(a, b, rest_length, _, _)| {
-                let length = (self.position_at(a) - self.position_at(b)).length();
-                let stretch = length / rest_length;
+            .filter(|spring| spring.rest_length.is_finite() && spring.rest_length > 0.0)
+            .filter_map(|spring| {
+                let length = (self.position_at(spring.a) - self.position_at(spring.b)).length();
+                let stretch = length / spring.rest_length;
                 stretch.is_finite().then_some(stretch)
             })
             .collect();
@@ -165,6 +174,12 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         }
         let mid = stretches.len() / 2;
         *stretches.select_nth_unstable_by(mid, f32::total_cmp).1
+    }
+
+    /// How far the last [`set_spring_scale_by_stretch`](Self::set_spring_scale_by_stretch)
+    /// blended from its `near` factor toward its `far` one, from 0 to 1.
+    pub(crate) fn spring_blend(&self) -> f32 {
+        self.spring_scale.blend
     }
 
     /// The factor [`set_spring_scale`](Self::set_spring_scale) last set, or the `near`

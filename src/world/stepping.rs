@@ -85,6 +85,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             &(),
             events,
         );
+        self.touched = false;
         self.recover_quarantined();
         self.collect_events();
     }

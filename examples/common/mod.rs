@@ -1,0 +1,80 @@
+//! What the examples share: the shipped scenes, and a host that owns its positions and
+//! calls `step` once per frame.
+#![allow(dead_code)]
+
+use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
+use graph_canvas_layout::{
+    CanvasSceneInput, CanvasViewport, DeltaMap, Layout, LayoutExtras, RapierLayout,
+    RapierLayoutConfig, RapierLayoutState, SceneFile,
+};
+
+/// Loads `scenes/<name>.json`.
+pub fn load(name: &str) -> CanvasSceneInput<u32> {
+    let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    serde_json::from_str::<SceneFile>(&text)
+        .unwrap_or_else(|e| panic!("{path}: {e}"))
+        .into_scene()
+}
+
+/// A host canvas: its scene (positions included), the layout and what it passes in.
+pub struct Host {
+    pub scene: CanvasSceneInput<u32>,
+    pub layout: RapierLayout<u32>,
+    pub state: RapierLayoutState,
+    pub extras: LayoutExtras<u32>,
+}
+
+impl Host {
+    pub fn new(scene: CanvasSceneInput<u32>, config: RapierLayoutConfig) -> Self {
+        Self {
+            scene,
+            layout: RapierLayout::new(config),
+            state: RapierLayoutState::default(),
+            extras: LayoutExtras::default(),
+        }
+    }
+
+    /// One frame of `dt` seconds, its deltas applied; returns them.
+    pub fn frame(&mut self, dt: f32) -> DeltaMap<u32> {
+        let deltas = self.layout.step(
+            &self.scene,
+            &mut self.state,
+            dt,
+            &CanvasViewport::default(),
+            &self.extras,
+        );
+        self.scene.apply_deltas(&deltas);
+        deltas
+    }
+
+    /// Frames of `dt` until `is_converged`, at most `budget`; returns how many ran.
+    pub fn settle(&mut self, dt: f32, budget: usize) -> usize {
+        for frame in 1..=budget {
+            self.frame(dt);
+            if self.layout.is_converged(&self.state) {
+                return frame;
+            }
+        }
+        budget
+    }
+
+    /// Where the scene has node `id`.
+    pub fn pos(&self, id: u32) -> Point2D<f32> {
+        self.scene
+            .nodes
+            .iter()
+            .find(|n| n.id == id)
+            .unwrap_or_else(|| panic!("node {id} not in the scene"))
+            .position
+    }
+
+    /// The mean of the scene's positions.
+    pub fn centre(&self) -> Point2D<f32> {
+        let nodes = &self.scene.nodes;
+        let sum = nodes
+            .iter()
+            .fold(Vector2D::zero(), |s, n| s + n.position.to_vector());
+        (sum / nodes.len().max(1) as f32).to_point()
+    }
+}

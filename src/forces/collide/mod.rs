@@ -1,0 +1,427 @@
+//! Disk separation of the layout's own ([`ContactModel::Disks`](crate::ContactModel)):
+//! d3-force's `forceCollide` as soft contact constraints between disks, solved the way
+//! Box2D v3 solves its contacts ("soft step"), without rapier's pair bookkeeping.
+//!
+//! Around each rapier step of a substep:
+//! 1. **before** ([`Collide::resolve`]): the pairs that may touch are found on a uniform
+//!    grid (`grid.rs`); each starts from the impulse it ended the last substep with
+//!    (warm starting), and a few projected Gauss–Seidel passes give every pair the
+//!    normal impulse that keeps it from closing beyond touching and pushes an overlap
+//!    apart as a spring of [`ContactSoftness`](crate::ContactSoftness)' frequency and
+//!    damping ratio would (speed-limited);
+//! 2. rapier moves the bodies with the resulting velocities;
+//! 3. **after** ([`Collide::relax`]): passes without the push take out the speed the
+//!    push left in the velocities, so parted disks stop instead of flying apart, and a
+//!    contact pressed by a steady force holds still.
+//!
+//! Impulses only push (they stay at or above zero). Kinematic, fixed and sleeping bodies
+//! do not give way; a sleeping body that an awake or driven one presses into wakes and
+//! gives way from then on.
+
+use std::hash::Hash;
+
+use euclid::default::{Point2D, Vector2D};
+use rapier2d::prelude::Vector;
+
+use super::Bodies;
+use crate::config::ContactSoftness;
+use crate::world::RapierSceneWorld;
+
+mod grid;
+mod projection;
+
+use grid::Grid;
+
+/// A sleeping body that an awake one would push into faster than this (world units per
+/// second: rapier's sleep threshold at the default length unit) wakes.
+const WAKE_SPEED: f32 = 5.0;
+/// Two bodies asleep with a deeper overlap than this (world units) are woken and parted.
+const SLEEPING_OVERLAP: f32 = 0.25;
+/// Passes over the pairs before the step, and after it.
+const PASSES: usize = 8;
+const RELAX_PASSES: usize = 8;
+/// A pass that changes no pair's relative speed by more than this (world units per
+/// second) ends the passes.
+const SETTLED_CHANGE: f32 = 0.05;
+/// The fastest an overlap is pushed apart, in world units per second (rapier's own
+/// limit at the default length unit: 10 lengths per second).
+const MAX_PUSH_SPEED: f32 = 1_000.0;
+
+/// The direction two coincident disks in slots `a < b` part along: one that depends
+/// only on the two slots.
+fn coincident_normal(a: u32, b: u32) -> Vector2D<f32> {
+    let angle = a as f32 * 2.399_963 + b as f32 * 0.618_034;
+    Vector2D::new(angle.cos(), angle.sin())
+}
+
+/// Two bodies close enough to touch during the substep.
+#[derive(Clone, Copy, Debug)]
+struct Pair {
+    a: u32,
+    b: u32,
+    /// From `a` to `b`.
+    normal: Vector2D<f32>,
+    /// Distance minus the sum of the radii (negative in an overlap).
+    separation: f32,
+    /// The normal impulse so far, divided by the mass (a change of relative speed).
+    impulse: f32,
+    /// The share of a change of relative speed each body takes: its inverse mass over
+    /// the two's (0 for a body that does not give way).
+    share_a: f32,
+    share_b: f32,
+}
+
+/// The soft-constraint coefficients of one substep (Box2D v3's `b2Softness`).
+#[derive(Clone, Copy, Debug)]
+struct Softness {
+    bias_rate: f32,
+    mass_scale: f32,
+    impulse_scale: f32,
+}
+
+impl Softness {
+    fn new(contacts: ContactSoftness, dt: f32) -> Self {
+        let c = contacts.coefficients();
+        let omega = 2.0 * std::f32::consts::PI * c.natural_frequency;
+        let a1 = 2.0 * c.damping_ratio + dt * omega;
+        let a2 = dt * omega * a1;
+        let a3 = 1.0 / (1.0 + a2);
+        Self {
+            bias_rate: omega / a1,
+            mass_scale: a2 * a3,
+            impulse_scale: a3,
+        }
+    }
+}
+
+/// The buffers of the disk separation, kept from substep to substep.
+#[derive(Debug, Default)]
+pub(crate) struct Collide {
+    grid: Grid,
+    pairs: Vec<Pair>,
+    radius: Vec<f32>,
+    inverse_mass: Vec<f32>,
+    /// Each body's velocity during the solve, and what it was before.
+    velocity: Vec<Vector2D<f32>>,
+    before: Vec<Vector2D<f32>>,
+    /// Each body's displacement over the substep as the pairs are found.
+    motion: Vec<Vector2D<f32>>,
+    /// After the step: the positions of the bodies in pairs, and which were read.
+    points: Vec<Point2D<f32>>,
+    read: Vec<bool>,
+    /// Dynamic bodies asleep (until a pair wakes them).
+    sleeping: Vec<bool>,
+    /// Last substep's pairs `(a, b, impulse)`, sorted, for warm starting, and the world
+    /// version they belong to (slots change with the bodies).
+    last: Vec<(u32, u32, f32)>,
+    last_version: Option<u64>,
+    /// The softness of the last [`resolve`](Self::resolve).
+    softness: Option<Softness>,
+}
+
+impl Collide {
+    /// Before the step: works out the velocity changes that keep disks apart over a
+    /// substep of `dt` seconds and puts them on the bodies. `points` are the bodies'
+    /// positions and `velocities` the velocities this substep's forces give them, by
+    /// world slot. Returns whether any pair may touch; then call
+    /// [`relax`](Self::relax) after the step.
+    pub(crate) fn resolve<N: Clone + Eq + Hash>(
+        &mut self,
+        world: &mut RapierSceneWorld<N>,
+        bodies: &Bodies,
+        contacts: ContactSoftness,
+        dt: f32,
+    ) -> bool {
+        self.prepare(world, bodies, dt);
+        self.find_pairs(&bodies.points, 0.0);
+        if self.pairs.is_empty() {
+            self.last.clear();
+            self.softness = None;
+            return false;
+        }
+        self.share();
+        self.warm_start(world.version());
+        let softness = Softness::new(contacts, dt);
+        self.softness = Some(softness);
+        for _ in 0..PASSES {
+            if self.pass(world, Some(softness), 1.0 / dt) < SETTLED_CHANGE {
+                break;
+            }
+        }
+        true
+    }
+
+    /// The velocity change [`resolve`](Self::resolve) gives the body in slot `s`.
+    pub(crate) fn change(&self, s: usize) -> Vector2D<f32> {
+        match (self.velocity.get(s), self.before.get(s)) {
+            (Some(&v), Some(&b)) if self.softness.is_some() => v - b,
+            _ => Vector2D::zero(),
+        }
+    }
+
+    /// After the step: passes without the push, from the bodies' new positions and
+    /// velocities, then the impulses are kept for the next substep.
+    pub(crate) fn relax<N: Clone + Eq + Hash>(&mut self, world: &mut RapierSceneWorld<N>, dt: f32) {
+        if self.softness.take().is_none() {
+            return;
+        }
+        let n = world.slot_count().min(self.velocity.len());
+        // Only the bodies in pairs: their new velocities and positions.
+        self.points.clear();
+        self.points.resize(n, Point2D::origin());
+        self.read.clear();
+        self.read.resize(n, false);
+        for pair in &self.pairs {
+            for s in [pair.a as usize, pair.b as usize] {
+                if s < n && !self.read[s] {
+                    self.read[s] = true;
+                    let body = world.body_at(s);
+                    let (t, v) = (body.translation(), body.linvel());
+                    self.points[s] = Point2D::new(t.x, t.y);
+                    self.velocity[s] = Vector2D::new(v.x, v.y);
+                    self.before[s] = self.velocity[s];
+                }
+            }
+        }
+        for pair in &mut self.pairs {
+            let (a, b) = (pair.a as usize, pair.b as usize);
+            if a < n && b < n {
+                let reach = self.radius[a] + self.radius[b];
+                pair.separation = (self.points[b] - self.points[a]).length() - reach;
+            }
+        }
+        for _ in 0..RELAX_PASSES {
+            if self.pass(world, None, 1.0 / dt) < SETTLED_CHANGE {
+                break;
+            }
+        }
+        for s in 0..n {
+            let change = self.velocity[s] - self.before[s];
+            if !self.read[s] || change == Vector2D::zero() {
+                continue;
+            }
+            let body = world.body_at_mut(s);
+            if body.is_dynamic() {
+                let v = body.linvel() + Vector::new(change.x, change.y);
+                if v.is_finite() {
+                    body.set_linvel(v, false);
+                }
+            }
+        }
+        self.last.clear();
+        self.last.extend(
+            self.pairs
+                .iter()
+                .filter(|p| p.impulse > 0.0)
+                .map(|p| (p.a, p.b, p.impulse)),
+        );
+        self.last_version = Some(world.version());
+    }
+
+    /// Radii, inverse masses (0 for bodies that do not give way), velocities and
+    /// predicted motion.
+    fn prepare<N: Clone + Eq + Hash>(
+        &mut self,
+        world: &RapierSceneWorld<N>,
+        bodies: &Bodies,
+        dt: f32,
+    ) {
+        self.radius.clear();
+        self.inverse_mass.clear();
+        self.motion.clear();
+        self.velocity.clear();
+        self.sleeping.clear();
+        self.sleeping.extend_from_slice(&bodies.sleeping);
+        for (s, &p) in bodies.points.iter().enumerate() {
+            self.radius.push(world.shape_at(s).bounding_radius());
+            let (inverse_mass, velocity) = if bodies.pushed[s] {
+                (1.0 / world.mass_at(s), bodies.velocities[s])
+            } else {
+                // Driven (kinematic) bodies move to where they are driven; the rest stay.
+                (0.0, (bodies.next[s] - p) / dt)
+            };
+            let velocity = if velocity.is_finite() {
+                velocity
+            } else {
+                Vector2D::zero()
+            };
+            self.inverse_mass.push(inverse_mass);
+            self.velocity.push(velocity);
+            self.motion.push(velocity * dt);
+        }
+        self.before.clear();
+        self.before.extend_from_slice(&self.velocity);
+    }
+
+    /// The pairs that may touch, or come within `margin` of touching, each once,
+    /// ordered by their slots.
+    fn find_pairs(&mut self, points: &[Point2D<f32>], margin: f32) {
+        let Self {
+            grid,
+            pairs,
+            radius,
+            inverse_mass,
+            motion,
+            ..
+        } = self;
+        pairs.clear();
+        grid.pairs(points, radius, motion, |a, b| {
+            let (a, b) = (a.min(b), a.max(b));
+            let (ia, ib) = (a as usize, b as usize);
+            let reach = radius[ia] + radius[ib];
+            let d = points[ib] - points[ia];
+            let near = reach + (motion[ib] - motion[ia]).length() + margin;
+            let distance_sq = d.square_length();
+            if distance_sq > near * near {
+                return;
+            }
+            let distance = distance_sq.sqrt();
+            let still = motion[ia] == Vector2D::zero() && motion[ib] == Vector2D::zero();
+            if inverse_mass[ia] == 0.0
+                && inverse_mass[ib] == 0.0
+                && still
+                && distance >= reach - SLEEPING_OVERLAP
+            {
+                // Neither gives way nor moves, and they do not overlap: nothing to part.
+                // (Two that fell asleep overlapping are woken and parted.)
+                return;
+            }
+            let normal = if distance > 1e-6 {
+                d / distance
+            } else {
+                coincident_normal(a, b)
+            };
+            pairs.push(Pair {
+                a,
+                b,
+                normal,
+                separation: distance - reach,
+                impulse: 0.0,
+                share_a: 0.0,
+                share_b: 0.0,
+            });
+        });
+        pairs.sort_unstable_by_key(|p| (p.a, p.b));
+        pairs.dedup_by_key(|p| (p.a, p.b));
+    }
+
+    /// Starts each pair from the impulse it ended the last substep with.
+    fn warm_start(&mut self, version: u64) {
+        let warm = self.last_version == Some(version);
+        let mut j = 0;
+        for k in 0..self.pairs.len() {
+            let pair = self.pairs[k];
+            if !warm {
+                continue;
+            }
+            let key = (pair.a, pair.b);
+            while j < self.last.len() && (self.last[j].0, self.last[j].1) < key {
+                j += 1;
+            }
+            if let Some(&(a, b, impulse)) = self.last.get(j) {
+                if (a, b) == key {
+                    self.push(k, impulse);
+                }
+            }
+        }
+    }
+
+    /// Each pair's shares of a change of its relative speed, from the inverse masses.
+    fn share(&mut self) {
+        for pair in &mut self.pairs {
+            let (wa, wb) = (
+                self.inverse_mass[pair.a as usize],
+                self.inverse_mass[pair.b as usize],
+            );
+            let total = wa + wb;
+            (pair.share_a, pair.share_b) = if total > 0.0 {
+                (wa / total, wb / total)
+            } else {
+                (0.0, 0.0)
+            };
+        }
+    }
+
+    /// One pass over the pairs: with `softness`, the push that parts an overlap;
+    /// without, only what keeps each pair from closing. Returns the largest change of a
+    /// pair's relative speed.
+    fn pass<N: Clone + Eq + Hash>(
+        &mut self,
+        world: &mut RapierSceneWorld<N>,
+        softness: Option<Softness>,
+        inverse_dt: f32,
+    ) -> f32 {
+        let mut largest = 0.0_f32;
+        let mut woke = false;
+        for k in 0..self.pairs.len() {
+            let pair = self.pairs[k];
+            let (a, b) = (pair.a as usize, pair.b as usize);
+            let closing = (self.velocity[b] - self.velocity[a]).dot(pair.normal);
+            let s = pair.separation;
+            let wanted = if s > 0.0 {
+                // Apart: may close the gap within the substep, no more.
+                -(closing + s * inverse_dt)
+            } else {
+                match softness {
+                    Some(soft) => {
+                        let bias = (soft.bias_rate * s).max(-MAX_PUSH_SPEED);
+                        -(closing + bias) * soft.mass_scale - soft.impulse_scale * pair.impulse
+                    }
+                    None => -closing,
+                }
+            };
+            if wanted > 0.0 && (self.sleeping[a] || self.sleeping[b]) {
+                let neither = pair.share_a + pair.share_b == 0.0;
+                if wanted > WAKE_SPEED || neither || s < -SLEEPING_OVERLAP {
+                    // A sleeping body pushed into, or overlapped, wakes and gives way;
+                    // one that an awake body only rests against (more slowly than a
+                    // body falls asleep) stays asleep.
+                    for s in [a, b] {
+                        if self.sleeping[s] {
+                            self.sleeping[s] = false;
+                            world.body_at_mut(s).wake_up(true);
+                            self.inverse_mass[s] = 1.0 / world.mass_at(s);
+                        }
+                    }
+                    woke = true;
+                    self.share_pair(k);
+                }
+            }
+            let change = wanted.max(-pair.impulse);
+            if change != 0.0 {
+                self.push(k, change);
+            }
+            largest = largest.max(change.abs());
+        }
+        if woke {
+            self.share();
+        }
+        largest
+    }
+
+    /// Pair `k`'s shares, after one of its bodies woke.
+    fn share_pair(&mut self, k: usize) {
+        let pair = &mut self.pairs[k];
+        let (wa, wb) = (
+            self.inverse_mass[pair.a as usize],
+            self.inverse_mass[pair.b as usize],
+        );
+        let total = wa + wb;
+        if total > 0.0 {
+            (pair.share_a, pair.share_b) = (wa / total, wb / total);
+        }
+    }
+
+    /// Adds `change` (a change of the pair's relative normal speed) to pair `k`,
+    /// shared between the two bodies.
+    fn push(&mut self, k: usize, change: f32) {
+        let pair = &mut self.pairs[k];
+        if pair.share_a + pair.share_b == 0.0 {
+            return;
+        }
+        pair.impulse += change;
+        let (normal, a, b) = (pair.normal, pair.a as usize, pair.b as usize);
+        self.velocity[a] -= normal * (change * pair.share_a);
+        self.velocity[b] += normal * (change * pair.share_b);
+    }
+}

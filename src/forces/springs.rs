@@ -1,0 +1,137 @@
+//! The edge springs' pull, d3-force's `link`: springs applied as forces of the layout's
+//! own ([`SpringModel::Forces`](crate::SpringModel::Forces)), and d3's link bias, the
+//! uneven share of a spring's pull between its two ends.
+//!
+//! A spring pulls both ends with the same force `k x`. d3-force's link instead moves its
+//! source by `(1 - b)` and its target by `b` of the correction, `b` being the source's
+//! share of the two degrees, so the end with fewer neighbours moves more. With
+//! [`RapierLayoutConfig::link_bias`](crate::RapierLayoutConfig::link_bias) `g`, end `a`
+//! of a spring takes `(1 + g s) k x` toward `b` and end `b` takes `(1 - g s) k x` toward
+//! `a`, with `s = (d_b - d_a) / (d_a + d_b)`: at `g = 1` end `a` feels
+//! `2 d_b / (d_a + d_b) · k x`, d3's share of twice the spring force. Springs that are
+//! rapier joints pull evenly themselves; this force then adds only the uneven part.
+//!
+//! Springs applied as forces also report their stiffness per body, so that
+//! `Forces::apply` can take an implicit step on it (see `forces/mod.rs`).
+
+use std::hash::Hash;
+
+use super::{BodyForce, ForceContext, ForceSums};
+use crate::config::{RapierLayoutConfig, SpringModel};
+use crate::sanitize::{finite_or, positive_or};
+use crate::world::RapierSceneWorld;
+
+/// One spring, as this force reads it.
+#[derive(Clone, Copy, Debug)]
+struct Link {
+    a: u32,
+    b: u32,
+    /// `(d_b - d_a) / (d_a + d_b)`: the extra share end `a` takes (end `b` takes its
+    /// negative).
+    share: f32,
+    rest_length: f32,
+    stiffness: f32,
+    damping: f32,
+    /// What the timestep resolves ([`max_resolved_stiffness`](crate::max_resolved_stiffness)),
+    /// as a rapier spring joint is capped.
+    cap: f32,
+}
+
+/// The springs of a world with their degree shares, rebuilt when the world's bodies or
+/// joints change.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct SpringForce {
+    version: Option<u64>,
+    links: Vec<Link>,
+    degrees: Vec<u32>,
+}
+
+impl<N: Clone + Eq + Hash> BodyForce<N> for SpringForce {
+    fn is_active(&self, config: &RapierLayoutConfig) -> bool {
+        config.spring_model == SpringModel::Forces || finite_or(config.link_bias, 0.0) > 0.0
+    }
+
+    fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
+        let as_forces = frame.world.springs_as_forces();
+        // Clamped: higher gains are explicit forces stiffer than the step resolves.
+        let gain = finite_or(frame.config.link_bias, 0.0).clamp(0.0, 1.0);
+        if !as_forces && gain == 0.0 {
+            return;
+        }
+        if self.version != Some(frame.world.version()) {
+            self.rebuild(frame.world);
+        }
+        let scale = frame.world.applied_spring_scale();
+        let dt = frame.dt;
+        for link in &self.links {
+            let (a, b) = (link.a as usize, link.b as usize);
+            let (Some(&pa), Some(&pb)) = (frame.points.get(a), frame.points.get(b)) else {
+                continue;
+            };
+            let d = pb - pa;
+            let length = d.length();
+            if !(length > 1e-3 && length.is_finite()) {
+                continue;
+            }
+            let k = (link.stiffness * scale).min(link.cap);
+            if !as_forces {
+                // The joint pulls evenly: add the uneven part only.
+                let f = d * (gain * link.share * k * (length - link.rest_length) / length);
+                if f.is_finite() {
+                    out.springs[a] += f;
+                    out.springs[b] += f;
+                }
+                continue;
+            }
+            let direction = d / length;
+            let c = link.damping * scale;
+            let closing = (frame.velocities[b] - frame.velocities[a]).dot(direction);
+            let pull = k * (length - link.rest_length) + c * closing;
+            let resistance = dt * dt * k + dt * c;
+            for (end, toward, part) in [
+                (a, direction, 1.0 + gain * link.share),
+                (b, -direction, 1.0 - gain * link.share),
+            ] {
+                let f = toward * (pull * part);
+                if frame.pushed[end] && f.is_finite() {
+                    out.springs[end] += f;
+                    out.resistance[end] += resistance * part;
+                }
+            }
+        }
+    }
+
+    fn reset(&mut self) {
+        // A new world counts its versions from 0 again.
+        *self = Self::default();
+    }
+}
+
+impl SpringForce {
+    fn rebuild<N: Clone + Eq + Hash>(&mut self, world: &RapierSceneWorld<N>) {
+        self.degrees.clear();
+        self.degrees.resize(world.slot_count(), 0);
+        self.links.clear();
+        for spring in world.springs() {
+            self.degrees[spring.a] += 1;
+            self.degrees[spring.b] += 1;
+            self.links.push(Link {
+                a: spring.a as u32,
+                b: spring.b as u32,
+                share: 0.0,
+                // What a rapier spring joint would be built with.
+                rest_length: positive_or(spring.rest_length, 0.0),
+                stiffness: positive_or(spring.stiffness, 0.0),
+                damping: positive_or(spring.damping, 0.0),
+                cap: spring.cap,
+            });
+        }
+        // Shares once every degree is counted.
+        for link in &mut self.links {
+            let da = self.degrees[link.a as usize] as f32;
+            let db = self.degrees[link.b as usize] as f32;
+            link.share = (db - da) / (da + db);
+        }
+        self.version = Some(world.version());
+    }
+}

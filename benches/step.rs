@@ -262,6 +262,13 @@ fn large(c: &mut Criterion) {
         RapierLayoutConfig::force_directed(),
         "force_directed",
     );
+    // Hubs: Barabási–Albert, 10,000 nodes, m = 2, on d3's spiral.
+    persistent(
+        c,
+        "ba_n10000_m2",
+        RapierLayoutConfig::force_directed(),
+        "force_directed",
+    );
     for name in ["n5000_e12500", "n10000_e25000"] {
         let start = relaxed(name, 300);
         persistent_from(

@@ -3,13 +3,22 @@
 //! variation), overlapping node pairs, edge crossings, frames to settle, and the step
 //! time. `scripts/d3-quality.mjs` measures d3-force on the same scenes.
 //!
-//! Run with `cargo run --release --example quality [--fast] [--starts N] [--leave-out
-//! SETTING] [scene ...]` (`--fast`: `RapierLayoutConfig::force_directed_fast()`;
-//! `--leave-out`: one of `spring_exponent`, `spring_degree_exponent`, `link_bias`,
-//! `first_contact_heat`, `hot_contact_frequency`, `stretch_limit`, `accuracy` switched
-//! back to d3's plain setting or rapier's two iterations, as in the README's table); any
-//! shipped scene may be named (`n1000_e2500`, `n10000_e25000`). Crossings are counted
-//! pairwise, so above 3,000 edges they are left out ("-"), as in the d3 script.
+//! Run with `cargo run --release --example quality [--fast] [--starts N] [--duration S]
+//! [--frames N] [--leave-out SETTING] [--write-scenes] [scene ...]`:
+//! - `--fast`: `RapierLayoutConfig::force_directed_fast()`;
+//! - `--duration S`: a cooling schedule of `S` seconds;
+//! - `--frames N`: stop after `N` frames (default 3,000), to time the first frames;
+//! - `--leave-out`: one of `spring_exponent`, `spring_degree_exponent`, `link_bias`,
+//!   `first_contact_heat`, `hot_contact_frequency`, `stretch_limit`, `accuracy`,
+//!   `contact_model`, `spring_model`, `reheat_hops`, `flight_damping` switched back to
+//!   d3's plain setting or the default configuration's, as in the README's table;
+//! - `--write-scenes`: also writes each scene to `target/scenes/<name>.json`, where the
+//!   d3 script finds the generated ones.
+//!
+//! Any shipped scene may be named (`n1000_e2500`, `n10000_e25000`), and generated ones:
+//! `ba_n{N}_m{M}` (Barabási–Albert) and `random_n{N}_e{E}`, seeded, on d3's spiral
+//! (`benches/common/generate.rs`). Crossings are counted pairwise, so above 3,000 edges
+//! they are left out ("-"), as in the d3 script.
 //!
 //! `--starts N` lays each scene out N times, from the file's positions and then from
 //! N − 1 copies jittered by up to half a unit (a fixed sequence, so runs repeat), and
@@ -20,8 +29,11 @@ use std::time::Instant;
 
 use graph_canvas_layout::{
     quality, Accuracy, CanvasSceneInput, CanvasViewport, Layout, LayoutExtras, RapierLayout,
-    RapierLayoutConfig, RapierLayoutState, SceneFile,
+    RapierLayoutConfig, RapierLayoutState, SceneFile, SceneFileNode,
 };
+
+#[path = "../benches/common/generate.rs"]
+mod generate;
 
 const SCENES: [&str; 6] = [
     "karate",
@@ -104,8 +116,8 @@ fn leave_out(config: &mut RapierLayoutConfig, setting: &str) {
     }
 }
 
-/// Lays `scene` out until `is_converged` (or [`MAX_FRAMES`]) and measures the result.
-fn run(mut scene: CanvasSceneInput<u32>, config: &RapierLayoutConfig) -> Run {
+/// Lays `scene` out until `is_converged` (or `max_frames`) and measures the result.
+fn run(mut scene: CanvasSceneInput<u32>, config: &RapierLayoutConfig, max_frames: usize) -> Run {
     let config = config.clone();
     let default_radius = config.default_radius;
     let mut layout = RapierLayout::new(config);
@@ -114,7 +126,7 @@ fn run(mut scene: CanvasSceneInput<u32>, config: &RapierLayoutConfig) -> Run {
     let mut frames = 0;
     let mut step_micros = Vec::new();
     let started = Instant::now();
-    while !layout.is_converged(&state) && frames < MAX_FRAMES {
+    while !layout.is_converged(&state) && frames < max_frames {
         let step_started = Instant::now();
         let deltas = layout.step(
             &scene,
@@ -159,6 +171,40 @@ fn jittered(mut scene: CanvasSceneInput<u32>, start: u64) -> CanvasSceneInput<u3
     scene
 }
 
+/// A shipped scene, or a generated one (`ba_n10000_m2`, `random_n100000_e250000`).
+fn load(name: &str) -> CanvasSceneInput<u32> {
+    if let Some(scene) = generate::by_name(name) {
+        return scene;
+    }
+    let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    serde_json::from_str::<SceneFile>(&text)
+        .unwrap_or_else(|e| panic!("{path}: {e}"))
+        .into_scene()
+}
+
+/// Writes `scene` to `target/scenes/<name>.json` in the scene file format, for the d3
+/// script.
+fn write_scene(name: &str, scene: &CanvasSceneInput<u32>) {
+    let file = SceneFile {
+        nodes: scene
+            .nodes
+            .iter()
+            .map(|n| SceneFileNode {
+                id: n.id,
+                x: n.position.x,
+                y: n.position.y,
+                radius: n.radius,
+            })
+            .collect(),
+        edges: scene.edges.iter().map(|e| (e.source, e.target)).collect(),
+    };
+    let dir = format!("{}/target/scenes", env!("CARGO_MANIFEST_DIR"));
+    std::fs::create_dir_all(&dir).expect("target/scenes");
+    let text = serde_json::to_string(&file).expect("scene json");
+    std::fs::write(format!("{dir}/{name}.json"), text).expect("scene file written");
+}
+
 fn count(value: Option<usize>) -> String {
     value.map_or_else(|| "-".to_string(), |v| v.to_string())
 }
@@ -172,6 +218,8 @@ fn main() {
     };
     tune(&mut config);
     let mut starts = 1_u64;
+    let mut max_frames = MAX_FRAMES;
+    let mut write_scenes = false;
     let mut names = Vec::new();
     let mut rest = args.iter();
     while let Some(arg) = rest.next() {
@@ -195,6 +243,14 @@ fn main() {
                     cooling.duration = seconds;
                 }
             }
+            "--frames" => {
+                max_frames = rest
+                    .next()
+                    .and_then(|n| n.parse().ok())
+                    .filter(|&n| n > 0)
+                    .expect("--frames takes a positive count");
+            }
+            "--write-scenes" => write_scenes = true,
             "--leave-out" => {
                 let setting = rest.next().expect("--leave-out takes a setting");
                 leave_out(&mut config, setting);
@@ -213,17 +269,16 @@ fn main() {
         println!("| --- | ---: | ---: | ---: | ---: | ---: |");
     }
     for name in names {
-        let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
-        let text = std::fs::read_to_string(&path).expect("scene file");
-        let scene = serde_json::from_str::<SceneFile>(&text)
-            .expect("scene json")
-            .into_scene();
+        let scene = load(&name);
+        if write_scenes {
+            write_scene(&name, &scene);
+        }
         let (nodes, edges) = (scene.nodes.len(), scene.edges.len());
         let runs: Vec<Run> = (0..starts)
-            .map(|k| run(jittered(scene.clone(), k), &config))
+            .map(|k| run(jittered(scene.clone(), k), &config, max_frames))
             .collect();
         let settled = |frames: usize| {
-            if frames >= MAX_FRAMES {
+            if frames >= max_frames {
                 " (not settled)"
             } else {
                 ""

@@ -2,12 +2,16 @@
 // node radius, centre. Prints edge-length CV, overlapping pairs, crossings, ticks to
 // settle (d3 stops when alpha < alphaMin: 300 ticks) and the mean tick time.
 //
-//   cd scripts && npm install && node d3-quality.mjs [--starts N] [scene ...]
+//   cd scripts && npm install && node d3-quality.mjs [--starts N] [--ticks N] [scene ...]
+//
+// Scenes are read from `scenes/`, or from `target/scenes/` where the `quality` example
+// writes generated ones (`cargo run --release --example quality -- --write-scenes
+// ba_n10000_m2`). `--ticks N` stops after N ticks (to time the tick of a huge graph).
 //
 // `--starts N` lays each scene out N times, from the file's positions and then from N - 1
 // copies jittered by up to half a unit, with the same sequence as the `quality` example
 // (`cargo run --release --example quality -- --starts N`), and prints the spread.
-import { readFileSync } from "node:fs";
+import { existsSync, readFileSync } from "node:fs";
 import { forceSimulation, forceLink, forceManyBody, forceCollide, forceCenter } from "d3-force";
 
 const args = process.argv.slice(2);
@@ -16,6 +20,12 @@ const startsAt = args.indexOf("--starts");
 if (startsAt >= 0) {
   starts = Number(args[startsAt + 1]);
   args.splice(startsAt, 2);
+}
+let maxTicks = Infinity;
+const ticksAt = args.indexOf("--ticks");
+if (ticksAt >= 0) {
+  maxTicks = Number(args[ticksAt + 1]);
+  args.splice(ticksAt, 2);
 }
 const scenes = args.length > 0 ? args
   : ["karate", "les_miserables", "florentine", "n200_e500", "tree_1023", "grid_30x30", "n1000_e2500", "n10000_e25000"];
@@ -82,7 +92,7 @@ function layout(scene, start) {
     .stop();
   let ticks = 0;
   const started = process.hrtime.bigint();
-  while (sim.alpha() >= sim.alphaMin()) { sim.tick(); ticks++; }
+  while (sim.alpha() >= sim.alphaMin() && ticks < maxTicks) { sim.tick(); ticks++; }
   const ms = Number(process.hrtime.bigint() - started) / 1e6 / ticks;
   return { ticks, ms, nodes, links, ...measure(nodes, links) };
 }
@@ -95,7 +105,9 @@ if (starts === 1) {
   console.log("| --- | ---: | ---: | ---: | ---: |");
 }
 for (const name of scenes) {
-  const scene = JSON.parse(readFileSync(new URL(`../scenes/${name}.json`, import.meta.url)));
+  const shipped = new URL(`../scenes/${name}.json`, import.meta.url);
+  const generated = new URL(`../target/scenes/${name}.json`, import.meta.url);
+  const scene = JSON.parse(readFileSync(existsSync(shipped) ? shipped : generated));
   const runs = Array.from({ length: starts }, (_, k) => layout(scene, k));
   const pairwise = (count, x) => (count <= 3000 ? x : "-");
   if (starts === 1) {

@@ -10,10 +10,16 @@ use graph_canvas_layout::{
     RapierLayoutConfig, RapierLayoutState, SceneFile,
 };
 
+pub mod generate;
+
 pub const FRAME: f32 = 1.0 / 60.0;
 
-/// Loads `scenes/<name>.json`.
+/// Loads `scenes/<name>.json`, or generates the scene a generator's name stands for
+/// (`ba_n10000_m2`, `random_n100000_e250000`: [`generate::by_name`]).
 pub fn scene(name: &str) -> CanvasSceneInput<u32> {
+    if let Some(scene) = generate::by_name(name) {
+        return scene;
+    }
     let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     serde_json::from_str::<SceneFile>(&text)

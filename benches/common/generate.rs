@@ -1,0 +1,101 @@
+//! Seeded graph generators for scenes too large to ship as files, placed the way d3-force
+//! places nodes without positions (its phyllotaxis spiral, as the shipped random scenes
+//! are): a Barabási–Albert graph (hubs) and a uniform random graph. The same name gives
+//! the same scene on every machine. Used by the benchmarks and the `quality` example.
+
+use graph_canvas_layout::euclid::default::Point2D;
+use graph_canvas_layout::{CanvasEdge, CanvasNode, CanvasSceneInput};
+
+/// splitmix64: small, fast and the same everywhere.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in `0..n`.
+    fn below(&mut self, n: usize) -> usize {
+        ((u128::from(self.next()) * n as u128) >> 64) as usize
+    }
+}
+
+/// d3-force's initial position of node `i`: radius `10 √(0.5 + i)`, angle `i π (3 − √5)`.
+pub fn phyllotaxis(i: usize) -> Point2D<f32> {
+    let radius = 10.0 * (0.5 + i as f64).sqrt();
+    let angle = i as f64 * std::f64::consts::PI * (3.0 - 5.0_f64.sqrt());
+    Point2D::new((radius * angle.cos()) as f32, (radius * angle.sin()) as f32)
+}
+
+fn spiral(n: usize, edges: Vec<(usize, usize)>) -> CanvasSceneInput<u32> {
+    CanvasSceneInput::new(
+        (0..n)
+            .map(|i| CanvasNode::new(i as u32, phyllotaxis(i)))
+            .collect(),
+        edges
+            .into_iter()
+            .map(|(a, b)| CanvasEdge::new(a as u32, b as u32))
+            .collect(),
+    )
+}
+
+/// Barabási–Albert preferential attachment: a clique of `m + 1` nodes, then each new
+/// node links to `m` distinct earlier nodes chosen with probability proportional to
+/// their degree. `n × m` edges, about; a few hubs of high degree.
+pub fn barabasi_albert(n: usize, m: usize, seed: u64) -> CanvasSceneInput<u32> {
+    let mut rng = Rng(seed);
+    let mut edges = Vec::with_capacity(n * m);
+    // Every edge's two ends: drawing from it is drawing by degree.
+    let mut ends: Vec<usize> = Vec::with_capacity(2 * n * m);
+    let core = (m + 1).min(n);
+    for a in 0..core {
+        for b in a + 1..core {
+            edges.push((a, b));
+            ends.extend([a, b]);
+        }
+    }
+    let mut chosen = Vec::with_capacity(m);
+    for node in core..n {
+        chosen.clear();
+        while chosen.len() < m.min(node) {
+            let target = ends[rng.below(ends.len())];
+            if !chosen.contains(&target) {
+                chosen.push(target);
+            }
+        }
+        for &target in &chosen {
+            edges.push((target, node));
+            ends.extend([target, node]);
+        }
+    }
+    spiral(n, edges)
+}
+
+/// `e` distinct edges between uniformly drawn pairs of `n` nodes, no self-loops.
+pub fn random_graph(n: usize, e: usize, seed: u64) -> CanvasSceneInput<u32> {
+    let mut rng = Rng(seed);
+    let mut seen = std::collections::HashSet::with_capacity(e);
+    let mut edges = Vec::with_capacity(e);
+    while edges.len() < e.min(n * n.saturating_sub(1) / 2) {
+        let (a, b) = (rng.below(n), rng.below(n));
+        if a != b && seen.insert((a.min(b), a.max(b))) {
+            edges.push((a, b));
+        }
+    }
+    spiral(n, edges)
+}
+
+/// The generated scene a name stands for: `ba_n{N}_m{M}` or `random_n{N}_e{E}` (seed 1).
+pub fn by_name(name: &str) -> Option<CanvasSceneInput<u32>> {
+    let number = |s: &str, prefix: char| s.strip_prefix(prefix)?.parse::<usize>().ok();
+    let parts: Vec<&str> = name.split('_').collect();
+    match parts.as_slice() {
+        ["ba", n, m] => Some(barabasi_albert(number(n, 'n')?, number(m, 'm')?, 1)),
+        ["random", n, e] => Some(random_graph(number(n, 'n')?, number(e, 'e')?, 1)),
+        _ => None,
+    }
+}

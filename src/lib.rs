@@ -142,8 +142,8 @@ pub use rapier2d;
 pub use adapter::{RapierLayout, RapierLayoutState, REST_TIME};
 pub use config::cooling::Cooling;
 pub use config::{
-    Accuracy, BodyKindPolicy, ContactModel, ContactSoftness, EdgeJoint, RapierLayoutConfig,
-    SolverSettings, SpringModel, TopologyUpdate,
+    Accuracy, BodyKindPolicy, ContactModel, ContactSoftness, EdgeJoint, EdgeWeight,
+    RapierLayoutConfig, SolverSettings, SpringModel, TopologyUpdate,
 };
 pub use forces::barnes_hut::ManyBody;
 pub use forces::many_body::Repulsion;

@@ -35,6 +35,15 @@ fn frame_time() -> impl Strategy<Value = f32> {
     ]
 }
 
+/// An edge weight: mostly ordinary ones, 0, and bad ones.
+fn weight() -> impl Strategy<Value = f32> {
+    prop_oneof![
+        4 => prop_oneof![Just(0.5_f32), Just(1.0), Just(2.0), Just(3.0)],
+        1 => Just(0.0_f32),
+        1 => prop_oneof![Just(-1.0_f32), Just(f32::NAN), Just(f32::INFINITY)],
+    ]
+}
+
 fn action() -> impl Strategy<Value = Action> {
     let id = 0..IDS;
     prop_oneof![
@@ -49,6 +58,7 @@ fn action() -> impl Strategy<Value = Action> {
         1 => id.clone().prop_map(Action::DragEnd),
         1 => (id.clone(), coordinate(), coordinate()).prop_map(|(i, x, y)| Action::HostMove(i, x, y)),
         1 => id.clone().prop_map(Action::Poison),
+        1 => (0usize..40, weight()).prop_map(|(i, w)| Action::Weigh(i, w)),
         6 => frame_time().prop_map(Action::Step),
     ]
 }
@@ -69,6 +79,7 @@ fn long_action() -> impl Strategy<Value = Action> {
         2 => (id.clone(), -80.0_f32..80.0, -80.0_f32..80.0).prop_map(|(i, x, y)| Action::Throw(i, x, y)),
         1 => (id.clone(), -200.0_f32..200.0, -200.0_f32..200.0).prop_map(|(i, x, y)| Action::HostMove(i, x, y)),
         1 => Just(Action::Settle),
+        1 => (0usize..40, weight()).prop_map(|(i, w)| Action::Weigh(i, w)),
         12 => frame_time().prop_map(Action::Step),
     ]
 }

@@ -97,6 +97,14 @@ fn action(u: &mut Unstructured) -> Result<Action> {
         11 => Action::Poison(id(u)?),
         12 => Action::Throw(id(u)?, coordinate(u)?, coordinate(u)?),
         13 if u.ratio(1, 8)? => Action::Settle,
+        14 if u.ratio(1, 2)? => Action::Weigh(
+            u.int_in_range(0..=40)?,
+            match u.int_in_range(0..=5)? {
+                0 => f32::from_bits(u.arbitrary()?),
+                1 => 0.0,
+                n => n as f32 / 2.0,
+            },
+        ),
         _ => Action::Step(frame_time(u)?),
     })
 }

@@ -30,15 +30,19 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             return false;
         };
         self.matching.remember_edges(scene);
-        if self.world.is_some() && topology.hash == self.topology_hash {
+        let same_edges = topology.hash == self.topology_hash;
+        if self.world.is_some() && same_edges && topology.weight_hash == self.weight_hash {
             return false;
         }
-        if self.world.is_none() || self.config.topology_update == TopologyUpdate::Rebuild {
+        let rebuild = self.config.topology_update == TopologyUpdate::Rebuild && !same_edges;
+        if self.world.is_none() || rebuild {
             self.build_world(scene, &topology);
         } else {
+            // Also a weight edit alone: its joints are re-tuned in place.
             self.patch_world(scene, &topology);
         }
         self.topology_hash = topology.hash;
+        self.weight_hash = topology.weight_hash;
         if let Some(world) = self.world.as_mut() {
             world.set_topology_hash(topology.hash);
         }
@@ -128,14 +132,15 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             .iter()
             .map(|&i| (&scene.nodes[i].id, i))
             .collect();
-        let wanted: HashSet<(usize, usize), IdHasher> = topology
+        let weight_of: HashMap<(usize, usize), f32, IdHasher> = topology
             .edges
             .iter()
-            .map(|&(a, b)| (a.min(b), a.max(b)))
+            .zip(&topology.weights)
+            .map(|(&(a, b), &w)| ((a.min(b), a.max(b)), w))
             .collect();
         world.retain_edge_joints(|a, b| {
             let kept = match (index_of.get(a), index_of.get(b)) {
-                (Some(&x), Some(&y)) => wanted.contains(&(x.min(y), x.max(y))),
+                (Some(&x), Some(&y)) => weight_of.contains_key(&(x.min(y), x.max(y))),
                 _ => false,
             };
             if !kept {
@@ -145,16 +150,31 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         });
         let degrees = topology.degrees(scene.nodes.len());
         insert_joints(world, scene, topology, &degrees, config, &mut touched);
-        if degree_exponent(config).is_some() {
-            // Springs whose ends changed degree take their new share.
-            world.retune_edge_joints(|a, b| match (index_of.get(a), index_of.get(b)) {
-                (Some(&x), Some(&y)) => edge_joint_for(config, degrees[x], degrees[y]),
-                _ => config.edge_joint,
-            });
-        }
+        let weight = |a: &N, b: &N| match (index_of.get(a), index_of.get(b)) {
+            (Some(&x), Some(&y)) => weight_of.get(&(x.min(y), x.max(y))).copied(),
+            _ => None,
+        };
+        // A weight edit touches the edge's ends.
+        world.update_joint_weights(
+            |a, b| weight(a, b).unwrap_or(1.0),
+            |a, b| touched.extend([a.clone(), b.clone()]),
+        );
+        // Springs whose ends changed degree take their new share, and edges whose weight
+        // changed their new strength or length.
+        world.retune_edge_joints(|a, b| match (index_of.get(a), index_of.get(b)) {
+            (Some(&x), Some(&y)) => {
+                edge_joint_for(config, degrees[x], degrees[y], weight(a, b).unwrap_or(1.0))
+            }
+            _ => config.edge_joint,
+        });
         for id in &touched {
             if let Some(s) = world.slot_of(id) {
                 self.disturbances.touch(s, true);
+                // Springs applied as forces link no rapier island that would wake them.
+                let body = world.body_at_mut(s);
+                if body.is_dynamic() && body.is_sleeping() {
+                    body.wake_up(true);
+                }
             }
         }
         self.patches += 1;
@@ -211,9 +231,10 @@ fn insert_joints<N: Clone + Eq + Hash>(
     config: &RapierLayoutConfig,
     ends: &mut Vec<N>,
 ) {
-    for &(a, b) in &topology.edges {
+    for (&(a, b), &weight) in topology.edges.iter().zip(&topology.weights) {
         let (ia, ib) = (&scene.nodes[a].id, &scene.nodes[b].id);
-        if world.insert_edge_joint(ia, ib, &edge_joint_for(config, degrees[a], degrees[b])) {
+        let kind = edge_joint_for(config, degrees[a], degrees[b], weight);
+        if world.insert_weighted_edge_joint(ia, ib, &kind, weight) {
             ends.extend([ia.clone(), ib.clone()]);
         }
     }
@@ -249,18 +270,20 @@ fn binding_for<N: Clone>(
     }
 }
 
-/// The joint `config` gives an edge whose ends have `da` and `db` distinct neighbours:
-/// [`RapierLayoutConfig::edge_joint`], with a spring's stiffness and damping divided by
-/// `min(da, db)^exponent` ([`RapierLayoutConfig::spring_degree_exponent`]; unusable
-/// exponents count as 0).
-fn edge_joint_for(config: &RapierLayoutConfig, da: u32, db: u32) -> EdgeJoint {
-    match degree_exponent(config) {
+/// The joint `config` gives an edge of weight `weight` whose ends have `da` and `db`
+/// distinct neighbours: [`RapierLayoutConfig::edge_joint`], with a spring's stiffness
+/// and damping divided by `min(da, db)^exponent`
+/// ([`RapierLayoutConfig::spring_degree_exponent`]; unusable exponents count as 0), then
+/// weighted as [`RapierLayoutConfig::edge_weight`] says.
+fn edge_joint_for(config: &RapierLayoutConfig, da: u32, db: u32, weight: f32) -> EdgeJoint {
+    let shared = match degree_exponent(config) {
         Some(exponent) => {
             let share = (da.min(db).max(1) as f32).powf(exponent);
             scaled_spring(&config.edge_joint, |x| x / share)
         }
         None => config.edge_joint,
-    }
+    };
+    shared.weighted(weight, config.edge_weight)
 }
 
 /// [`RapierLayoutConfig::spring_degree_exponent`] when it scales anything: finite and

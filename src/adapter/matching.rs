@@ -34,7 +34,7 @@ pub(super) struct Matching<N> {
     previous: Vec<NodeMatch>,
     /// The edges of the scene the topology was last computed from, to skip that work
     /// while the host passes the same edges.
-    edges: Vec<(N, N)>,
+    edges: Vec<(N, N, u32)>,
 }
 
 impl<N> Default for Matching<N> {
@@ -108,15 +108,15 @@ impl<N: Clone + Eq + Hash> Matching<N> {
         changed || seen != world.slot_count()
     }
 
-    /// Whether the scene passes the same edges, in the same order, as when the topology
-    /// was last computed.
+    /// Whether the scene passes the same edges, in the same order and with the same
+    /// weights, as when the topology was last computed.
     fn edges_unchanged(&self, scene: &CanvasSceneInput<N>) -> bool {
         self.edges.len() == scene.edges.len()
             && self
                 .edges
                 .iter()
                 .zip(&scene.edges)
-                .all(|((s, t), e)| *s == e.source && *t == e.target)
+                .all(|((s, t, w), e)| *s == e.source && *t == e.target && *w == e.weight.to_bits())
     }
 
     /// Remembers the scene's edges as the ones the topology was computed from.
@@ -126,7 +126,7 @@ impl<N: Clone + Eq + Hash> Matching<N> {
             scene
                 .edges
                 .iter()
-                .map(|e| (e.source.clone(), e.target.clone())),
+                .map(|e| (e.source.clone(), e.target.clone(), e.weight.to_bits())),
         );
     }
 

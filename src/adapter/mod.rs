@@ -90,6 +90,8 @@ pub struct RapierLayout<N> {
     /// The configuration the world was built with.
     applied: Option<RapierLayoutConfig>,
     topology_hash: u64,
+    /// The order-free hash of the edge weights the world's joints were built with.
+    weight_hash: u64,
     rebuilds: u64,
     patches: u64,
     /// Scene nodes matched to bodies this call.
@@ -145,6 +147,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             world: None,
             applied: None,
             topology_hash: 0,
+            weight_hash: 0,
             rebuilds: 0,
             patches: 0,
             matching: Matching::default(),
@@ -287,8 +290,10 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// or edge, and the call changes nothing.
     ///
     /// # Errors
-    /// [`LayoutError`] for a non-finite position, a NaN, infinite or negative radius, a
-    /// repeated node id, or an edge naming a node that is not in the scene.
+    /// [`LayoutError`] for a non-finite position or one beyond
+    /// ±[`MAX_COORDINATE`](crate::MAX_COORDINATE), a NaN, infinite or negative radius, a
+    /// repeated node id, an edge naming a node that is not in the scene, or a negative or
+    /// non-finite edge weight.
     ///
     /// # Example
     /// ```

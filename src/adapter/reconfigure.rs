@@ -44,6 +44,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.world = None;
             self.topology_hash = 0;
         } else if applied.edge_joint != self.config.edge_joint
+            || applied.edge_weight != self.config.edge_weight
             || applied.spring_model != self.config.spring_model
             || applied.spring_degree_exponent.to_bits()
                 != self.config.spring_degree_exponent.to_bits()

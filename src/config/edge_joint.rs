@@ -61,6 +61,92 @@ impl Default for EdgeJoint {
     }
 }
 
+impl EdgeJoint {
+    /// This joint for an edge of weight `weight` under `mapping` ([`EdgeWeight`]): a
+    /// weight that is not positive (0, negative, NaN) gives no joint. Weight 1 gives
+    /// the joint itself, bit for bit.
+    pub(crate) fn weighted(self, weight: f32, mapping: EdgeWeight) -> EdgeJoint {
+        if !(weight > 0.0 && weight.is_finite()) {
+            return EdgeJoint::None;
+        }
+        match (mapping, self) {
+            (
+                EdgeWeight::Strength,
+                EdgeJoint::Spring {
+                    rest_length,
+                    stiffness,
+                    damping,
+                },
+            ) => EdgeJoint::Spring {
+                rest_length,
+                stiffness: stiffness * weight,
+                damping: damping * weight,
+            },
+            (
+                EdgeWeight::Strength,
+                EdgeJoint::Rope {
+                    max_length,
+                    stiffness,
+                },
+            ) => EdgeJoint::Rope {
+                max_length,
+                stiffness: stiffness * weight,
+            },
+            (
+                EdgeWeight::Length,
+                EdgeJoint::Spring {
+                    rest_length,
+                    stiffness,
+                    damping,
+                },
+            ) => EdgeJoint::Spring {
+                rest_length: rest_length * weight,
+                stiffness,
+                damping,
+            },
+            (
+                EdgeWeight::Length,
+                EdgeJoint::Rope {
+                    max_length,
+                    stiffness,
+                },
+            ) => EdgeJoint::Rope {
+                max_length: max_length * weight,
+                stiffness,
+            },
+            (EdgeWeight::Length, EdgeJoint::Distance { length }) => EdgeJoint::Distance {
+                length: length * weight,
+            },
+            (_, kind) => kind,
+        }
+    }
+}
+
+/// What [`CanvasEdge::weight`](crate::CanvasEdge::weight) does to an edge's joint. In
+/// both mappings weight 1 leaves the joint as [`RapierLayoutConfig::edge_joint`](crate::RapierLayoutConfig::edge_joint)
+/// (and the degree share) make it, bit for bit, and weight 0 gives the edge no joint:
+/// it stays topology (the topology hash, the degrees) and exerts nothing. A negative or
+/// non-finite weight is bad input ([`LayoutError::InvalidEdgeWeight`](crate::LayoutError::InvalidEdgeWeight));
+/// `step` treats it as 0 for that call. A weight edit re-tunes that joint in place: no
+/// rebuild, and the bodies keep their motion.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum EdgeWeight {
+    /// Weights are strengths (similarities, affinities, co-occurrence counts): a
+    /// spring's stiffness and damping are multiplied by the weight, so weight 2 pulls
+    /// twice as hard as weight 1 (d3-force's `link.strength`), and a rope's stiffness
+    /// past its length likewise. A rod ([`EdgeJoint::Distance`]) is rigid whatever its
+    /// weight. A node held between two springs of weights `w1` and `w2` and the same
+    /// rest length `L`, their anchors `D` apart, rests at `x = (w1 L + w2 (D - L)) /
+    /// (w1 + w2)` from the first anchor: nearer the heavier edge's anchor.
+    #[default]
+    Strength,
+    /// Weights are lengths (distances, dissimilarities, road lengths): a spring's rest
+    /// length, a rope's length and a rod's length are multiplied by the weight, so weight
+    /// 2 draws the edge twice as long (vis-network's `edges.length`, d3-force's
+    /// `link.distance`), at the configured stiffness.
+    Length,
+}
+
 impl From<EdgeJointSpec> for EdgeJoint {
     fn from(spec: EdgeJointSpec) -> Self {
         EdgeJoint::Spring {

@@ -17,7 +17,7 @@ mod presets;
 pub(crate) mod solver;
 
 use cooling::Cooling;
-pub use edge_joint::{BodyKindPolicy, EdgeJoint, SpringModel};
+pub use edge_joint::{BodyKindPolicy, EdgeJoint, EdgeWeight, SpringModel};
 pub use solver::{Accuracy, ContactModel, ContactSoftness, SolverSettings};
 
 /// What to do when the topology hash changes.
@@ -53,6 +53,12 @@ pub struct RapierLayoutConfig {
     /// replaces every joint in place; bodies keep their motion. Default:
     /// [`SpringModel::Joints`].
     pub spring_model: SpringModel,
+    /// What each edge's [`CanvasEdge::weight`](crate::CanvasEdge::weight) scales: the
+    /// joint's strength or its length ([`EdgeWeight`], with the formulas and when to
+    /// pick which). Changing it between calls replaces every joint in place; bodies
+    /// keep their motion. Costs nothing while every weight is 1. Default:
+    /// [`EdgeWeight::Strength`].
+    pub edge_weight: EdgeWeight,
     /// Body kinds for pinned and free nodes: anchors, kinematic pins, or nothing
     /// simulated at all ([`BodyKindPolicy`]). Default: [`BodyKindPolicy::PinnedStatic`].
     pub body_kind_policy: BodyKindPolicy,
@@ -178,6 +184,7 @@ impl Default for RapierLayoutConfig {
             default_radius: 16.0,
             edge_joint: EdgeJoint::default(),
             spring_model: SpringModel::Joints,
+            edge_weight: EdgeWeight::Strength,
             body_kind_policy: BodyKindPolicy::PinnedStatic,
             material: PhysicsMaterial::default(),
             max_frame_time: 0.25,

@@ -58,7 +58,10 @@ pub struct CanvasEdge<N> {
     pub source: N,
     /// The other end of the edge.
     pub target: N,
-    /// The host's weight; `1.0` by default. The Rapier layout does not read it.
+    /// The edge's weight; `1.0` by default. The layout scales the edge's joint by it,
+    /// its strength or its length as
+    /// [`RapierLayoutConfig::edge_weight`](crate::RapierLayoutConfig::edge_weight) says;
+    /// 0 keeps the edge as topology only. Negative or non-finite weights are bad input.
     pub weight: f32,
 }
 
@@ -70,6 +73,21 @@ impl<N> CanvasEdge<N> {
             target,
             weight: 1.0,
         }
+    }
+
+    /// This edge with weight `weight`
+    /// ([`RapierLayoutConfig::edge_weight`](crate::RapierLayoutConfig::edge_weight) says
+    /// what it scales).
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::CanvasEdge;
+    /// let edge = CanvasEdge::new(1_u32, 2).with_weight(2.5);
+    /// assert_eq!(edge.weight, 2.5);
+    /// ```
+    pub fn with_weight(mut self, weight: f32) -> Self {
+        self.weight = weight;
+        self
     }
 }
 

@@ -32,6 +32,7 @@ fn mix(mut x: u64) -> u64 {
 const NODE_TAG: u64 = 0x6e6f_6465;
 const EDGE_TAG: u64 = 0x6564_6765;
 const PIN_TAG: u64 = 0x7069_6e6e;
+const WEIGHT_TAG: u64 = 0x7765_6967;
 
 /// The topology the world should model this call, in scene order.
 #[derive(Debug)]
@@ -42,8 +43,13 @@ pub(crate) struct Topology {
     /// Unordered, de-duplicated edges between modelled nodes, as scene indices, in the
     /// order of their first occurrence; self-loops left out.
     pub(crate) edges: Vec<(usize, usize)>,
+    /// Each edge's weight, from its first occurrence: finite and non-negative (an
+    /// unusable weight counts as 0, no force, for the call).
+    pub(crate) weights: Vec<f32>,
     /// The order-free hash of nodes, edges and pins (never 0).
     pub(crate) hash: u64,
+    /// The order-free hash of the edges' weights.
+    pub(crate) weight_hash: u64,
 }
 
 impl Topology {
@@ -79,6 +85,8 @@ impl Topology {
         let mut seen: HashSet<(usize, usize), IdHasher> =
             HashSet::with_capacity_and_hasher(scene.edges.len(), IdHasher::default());
         let mut edges = Vec::with_capacity(scene.edges.len());
+        let mut weights = Vec::with_capacity(scene.edges.len());
+        let mut weight_hash: u64 = 0;
         for edge in &scene.edges {
             let (Some(&a), Some(&b)) = (first.get(&edge.source), first.get(&edge.target)) else {
                 continue;
@@ -88,13 +96,29 @@ impl Topology {
             }
             edges.push((a, b));
             let (ha, hb) = (ids[a], ids[b]);
-            hash = hash.wrapping_add(mix(mix(ha.min(hb) ^ EDGE_TAG) ^ ha.max(hb)));
+            let edge_hash = mix(mix(ha.min(hb) ^ EDGE_TAG) ^ ha.max(hb));
+            hash = hash.wrapping_add(edge_hash);
+            let weight = usable_weight(edge.weight);
+            weights.push(weight);
+            weight_hash =
+                weight_hash.wrapping_add(mix(edge_hash ^ WEIGHT_TAG ^ u64::from(weight.to_bits())));
         }
         Self {
             nodes,
             edges,
+            weights,
             hash: if hash == 0 { 1 } else { hash },
+            weight_hash,
         }
+    }
+}
+
+/// An edge's weight as the layout uses it: finite and non-negative, else 0.
+pub(crate) fn usable_weight(weight: f32) -> f32 {
+    if weight.is_finite() && weight >= 0.0 {
+        weight
+    } else {
+        0.0
     }
 }
 

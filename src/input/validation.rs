@@ -61,6 +61,17 @@ pub enum LayoutError<N> {
         /// The endpoint that is missing.
         missing: N,
     },
+    /// An edge's weight is negative, NaN or infinite.
+    InvalidEdgeWeight {
+        /// Index of the edge in `scene.edges`.
+        edge: usize,
+        /// The edge's source.
+        source: N,
+        /// The edge's target.
+        target: N,
+        /// The weight the host gave.
+        weight: f32,
+    },
 }
 
 impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
@@ -96,6 +107,15 @@ impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
             } => write!(
                 f,
                 "edge {edge} ({source:?} -> {target:?}) names node {missing:?}, which is not in the scene"
+            ),
+            LayoutError::InvalidEdgeWeight {
+                edge,
+                source,
+                target,
+                weight,
+            } => write!(
+                f,
+                "edge {edge} ({source:?} -> {target:?}) has an invalid weight {weight} (must be finite and >= 0)"
             ),
         }
     }
@@ -158,6 +178,14 @@ pub(crate) fn validate<N: Clone + Eq + Hash>(
                     missing: end.clone(),
                 });
             }
+        }
+        if !(edge.weight.is_finite() && edge.weight >= 0.0) {
+            return Err(LayoutError::InvalidEdgeWeight {
+                edge: i,
+                source: edge.source.clone(),
+                target: edge.target.clone(),
+                weight: edge.weight,
+            });
         }
     }
     Ok(())

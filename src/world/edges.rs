@@ -26,6 +26,18 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// inserted: not for [`EdgeJoint::None`], a self-loop, a missing node, or a pair that
     /// already has a joint.
     pub fn insert_edge_joint(&mut self, a: &N, b: &N, kind: &EdgeJoint) -> bool {
+        self.insert_weighted_edge_joint(a, b, kind, 1.0)
+    }
+
+    /// [`insert_edge_joint`](Self::insert_edge_joint) for an edge of weight `weight`
+    /// (`kind` is already weighted; the weight is kept to tell a later weight edit).
+    pub(crate) fn insert_weighted_edge_joint(
+        &mut self,
+        a: &N,
+        b: &N,
+        kind: &EdgeJoint,
+        weight: f32,
+    ) -> bool {
         let (Some(&ia), Some(&ib)) = (self.index.get(a), self.index.get(b)) else {
             return false;
         };
@@ -51,6 +63,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             a: a.clone(),
             b: b.clone(),
             kind: *kind,
+            weight,
         });
         self.version += 1;
         true
@@ -104,6 +117,23 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             }
         }
         changed
+    }
+
+    /// Records each joint's edge weight as `weight_of(a, b)` says, calling
+    /// `changed(a, b)` for every joint whose weight differs from the one it has. Joints
+    /// keep their kind: re-tune them afterwards.
+    pub(crate) fn update_joint_weights(
+        &mut self,
+        mut weight_of: impl FnMut(&N, &N) -> f32,
+        mut changed: impl FnMut(&N, &N),
+    ) {
+        for joint in &mut self.joints {
+            let weight = weight_of(&joint.a, &joint.b);
+            if weight.to_bits() != joint.weight.to_bits() {
+                joint.weight = weight;
+                changed(&joint.a, &joint.b);
+            }
+        }
     }
 
     /// Removes the joint between `a` and `b` (either order). Returns whether there was one.

@@ -83,6 +83,8 @@ pub(crate) struct JointSlot<N> {
     pub(crate) b: N,
     /// What the joint was built as: a re-tune to the same kind is skipped.
     pub(crate) kind: EdgeJoint,
+    /// The host's weight of its edge (1 for joints inserted without one).
+    pub(crate) weight: f32,
 }
 
 /// One spring as the forces read it: its two bodies' slots, its parameters as inserted

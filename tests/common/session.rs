@@ -7,7 +7,7 @@ use std::collections::{HashMap, HashSet};
 
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
-    CanvasSceneInput, DeltaMap, EdgeJoint, Layout, RapierLayoutConfig, MAX_COORDINATE,
+    CanvasSceneInput, DeltaMap, EdgeJoint, EdgeWeight, Layout, RapierLayoutConfig, MAX_COORDINATE,
 };
 
 use super::{edge, node, Host, FRAME};
@@ -55,6 +55,8 @@ pub enum Action {
     Poison(u32),
     /// A quick drag and release: three calls moving the node by the vector each.
     Throw(u32, f32, f32),
+    /// Sets the weight of edge `i % edges` (if any): any value, bad ones too.
+    Weigh(usize, f32),
     /// Calls at 1/60 s until the layout rests (at most 600).
     Settle,
     Step(f32),
@@ -119,6 +121,12 @@ pub fn apply_action(host: &mut Host<u32>, action: &Action) {
         Action::Poison(id) => {
             if has(host, id) {
                 host.set_pos(&id, Point2D::new(f32::NAN, 0.0));
+            }
+        }
+        Action::Weigh(i, weight) => {
+            let count = host.scene.edges.len();
+            if count > 0 {
+                host.scene.edges[i % count].weight = weight;
             }
         }
         Action::Throw(..) | Action::Settle | Action::Step(_) => {}
@@ -230,15 +238,28 @@ pub fn check(
 pub fn check_joints(host: &Host<u32>, before: &CanvasSceneInput<u32>) -> Result<(), String> {
     let world = host.layout.world().expect("a world");
     let config = &host.layout.config;
-    let mut pairs: Vec<(u32, u32)> = before
-        .edges
-        .iter()
-        .filter(|e| e.source != e.target)
-        .filter(|e| world.contains_node(&e.source) && world.contains_node(&e.target))
-        .map(|e| (e.source.min(e.target), e.source.max(e.target)))
-        .collect();
+    ensure_eq!(
+        config.edge_weight,
+        EdgeWeight::Strength,
+        "the checker knows strengths"
+    );
+    // Each modelled pair with the weight of its first occurrence (bad weights count as 0).
+    let mut weight_of: HashMap<(u32, u32), f32> = HashMap::new();
+    for e in &before.edges {
+        if e.source != e.target && world.contains_node(&e.source) && world.contains_node(&e.target)
+        {
+            let usable = if e.weight.is_finite() && e.weight >= 0.0 {
+                e.weight
+            } else {
+                0.0
+            };
+            weight_of
+                .entry((e.source.min(e.target), e.source.max(e.target)))
+                .or_insert(usable);
+        }
+    }
+    let mut pairs: Vec<(u32, u32)> = weight_of.keys().copied().collect();
     pairs.sort_unstable();
-    pairs.dedup();
     let mut degree: HashMap<u32, u32> = HashMap::new();
     for &(a, b) in &pairs {
         *degree.entry(a).or_default() += 1;
@@ -261,6 +282,27 @@ pub fn check_joints(host: &Host<u32>, before: &CanvasSceneInput<u32>) -> Result<
             }
             kind => Some(kind),
         };
+        // Weighted: strength times the weight, no joint at weight 0.
+        let weight = weight_of[&(a, b)];
+        let expected = expected.filter(|_| weight > 0.0).map(|kind| match kind {
+            EdgeJoint::Spring {
+                rest_length,
+                stiffness,
+                damping,
+            } => EdgeJoint::Spring {
+                rest_length,
+                stiffness: stiffness * weight,
+                damping: damping * weight,
+            },
+            EdgeJoint::Rope {
+                max_length,
+                stiffness,
+            } => EdgeJoint::Rope {
+                max_length,
+                stiffness: stiffness * weight,
+            },
+            kind => kind,
+        });
         ensure_eq!(
             world.edge_joint(&a, &b),
             expected,
@@ -271,15 +313,17 @@ pub fn check_joints(host: &Host<u32>, before: &CanvasSceneInput<u32>) -> Result<
             degree[&b]
         );
     }
+    let weighted = pairs.iter().filter(|p| weight_of[p] > 0.0).count();
     ensure_eq!(
         world.joint_count(),
         if config.edge_joint == EdgeJoint::None {
             0
         } else {
-            pairs.len()
+            weighted
         },
-        "joints for {} modelled edges",
-        pairs.len()
+        "joints for {} modelled edges ({} of positive weight)",
+        pairs.len(),
+        weighted
     );
     Ok(())
 }

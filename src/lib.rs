@@ -76,7 +76,11 @@
 //!    decides whether the layout is at rest and stops a cooled one.
 //!
 //! ## Feature flags
-//! - `parallel`: rapier's multi-threaded solver (rayon).
+//! - `petgraph`: `CanvasSceneInput::from_petgraph` and `from_petgraph_with` for any
+//!   petgraph graph (`&Graph`, `&StableGraph`, `&GraphMap`) with its own node ids, and
+//!   `pub use petgraph` (0.8, the version egui_graphs builds on).
+//! - `parallel`: rapier's multi-threaded solver (rayon). It speeds up rapier's joints
+//!   and contacts, not the layout's own springs, disk separation and repulsion.
 //! - `enhanced-determinism`: rapier's cross-platform bit-exact math.
 //!
 //! ## FAQ
@@ -115,13 +119,13 @@
 //!
 //! **Laying a graph out from scratch?** Use [`RapierLayoutConfig::force_directed`]:
 //! springs and contacts alone pack a graph into a blob; many-body repulsion spreads it.
-//! Its [`Cooling`] schedule brings the layout to rest within about 8.5 s of simulated
-//! time, then stops stepping the world until the next drag, release, host move or
-//! edit.
+//! Its [`Cooling`] schedule brings the layout to rest within about 5 s of simulated
+//! time (300 frames), then stops stepping the world until the next drag, release, host
+//! move or edit, which heats only the nodes near it.
 //!
 //! **Nodes pass through each other right after loading?** With
 //! [`RapierLayoutConfig::force_directed`], contacts join the first unfolding once it
-//! has cooled to [`Cooling::first_contact_heat`] (about 1.4 s): a fresh scatter
+//! has cooled to [`Cooling::first_contact_heat`] (about 0.8 s): a fresh scatter
 //! collapsing into thousands of contact pairs would cost most of the step. Set it to
 //! `None` for contacts from the first frame.
 #![deny(missing_docs)]
@@ -137,6 +141,8 @@ mod timestep;
 mod world;
 
 pub use euclid;
+#[cfg(feature = "petgraph")]
+pub use petgraph;
 pub use rapier2d;
 
 pub use adapter::{RapierLayout, RapierLayoutState, REST_TIME};
@@ -147,6 +153,8 @@ pub use config::{
 };
 pub use forces::barnes_hut::ManyBody;
 pub use forces::many_body::Repulsion;
+#[cfg(feature = "petgraph")]
+pub use input::petgraph::{spiral_position, NodeStart, SPIRAL_SPACING};
 pub use input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
 pub use input::scene_file::{SceneFile, SceneFileNode};
 pub use input::topology::topology_hash;

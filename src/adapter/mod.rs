@@ -271,6 +271,42 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         Some(own.max(alpha))
     }
 
+    /// Drops `node`'s body (and its joints), so the next call that names the id meets it
+    /// as a new node: placed where the host has it, at rest. Call it when an id comes
+    /// to mean another node, as a petgraph `StableGraph` reuses a removed node's index
+    /// for the next one added: removed and re-added between two calls, the id would
+    /// otherwise keep the old body, its position and its velocity. Returns whether there
+    /// was a body. Untouched bodies keep their motion.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasNode, CanvasSceneInput, Layout,
+    ///     LayoutExtras, RapierLayout, RapierLayoutState};
+    /// let mut scene = CanvasSceneInput::new(vec![CanvasNode::new(7_u32, Point2D::origin())], vec![]);
+    /// let mut layout = RapierLayout::default();
+    /// let (mut state, extras) = (RapierLayoutState::default(), LayoutExtras::default());
+    /// layout.step(&scene, &mut state, 1.0 / 60.0, &Default::default(), &extras);
+    /// assert!(layout.forget_node(&7));
+    /// assert!(!layout.world().unwrap().contains_node(&7));
+    /// // Id 7 is another node now: a new body where the host puts it.
+    /// scene.nodes[0].position = Point2D::new(500.0, 0.0);
+    /// layout.step(&scene, &mut state, 1.0 / 60.0, &Default::default(), &extras);
+    /// assert_eq!(layout.world().unwrap().get_position(&7), Some(Point2D::new(500.0, 0.0)));
+    /// ```
+    pub fn forget_node(&mut self, node: &N) -> bool {
+        let Some(world) = self.world.as_mut() else {
+            return false;
+        };
+        if !world.remove_node(node) {
+            return false;
+        }
+        // The next call works the topology out again and inserts the id anew.
+        self.topology_hash = 0;
+        self.matching.forget_edges();
+        self.flights.retain(|flight| &flight.id != node);
+        true
+    }
+
     /// Nodes whose bodies went non-finite during the last call (rapier quarantined
     /// them) and were put back, at rest, where they last were valid.
     pub fn recovered_nodes(&self) -> &[N] {

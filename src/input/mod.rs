@@ -5,6 +5,8 @@
 //! Nothing here touches rapier; the adapter reads these types and decides what the world
 //! models.
 
+#[cfg(feature = "petgraph")]
+pub(crate) mod petgraph;
 pub(crate) mod scene;
 pub(crate) mod scene_file;
 pub(crate) mod topology;

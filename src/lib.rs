@@ -43,7 +43,8 @@
 //! - [`Layout::step`] returns per-node deltas of this call only; pinned and dragged
 //!   nodes never appear in it.
 //! - Pinned nodes never move by physics; dragged nodes sit exactly where the host puts
-//!   them; releasing a drag throws the node with the pointer's last speed.
+//!   them; releasing a drag throws the node with the pointer's speed over the drag's
+//!   last [`throw_window`](RapierLayoutConfig::throw_window) seconds.
 //! - A free node the host moved itself (undo, snap) is put where the host put it.
 //! - [`RapierLayout::try_step`] rejects bad input with a [`LayoutError`] and changes
 //!   nothing; [`Layout::step`] leaves bad elements out and never panics.

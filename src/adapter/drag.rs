@@ -47,22 +47,35 @@ pub(super) fn drive_kinematic_bodies<N: Clone + Eq + Hash>(
     }
 }
 
-/// Records this call's host position of a dragged node and the pointer's velocity
-/// since the last call (`frame_dt` seconds ago), capped at `max_speed`: what its
-/// release will throw it with. The first frame of a drag has no velocity yet.
+/// Records this call's host position of a dragged node and the pointer's velocity over
+/// the drag's last `window` seconds, capped at `max_speed`: what its release will throw
+/// it with. This call's move covers `frame_dt` seconds; the velocity measured so far
+/// stands for the rest of the window, or for as long as the drag has lasted if that is
+/// shorter, so a frame in which the pointer reported no motion halves the speed of a
+/// 2-frame window instead of zeroing it. The first frame of a drag has no velocity yet.
 pub(super) fn track_drag(
     host: &mut HostSync,
     position: Point2D<f32>,
     was_dragging: bool,
     frame_dt: f32,
+    window: f32,
     max_speed: f32,
 ) {
-    let velocity = (position - host.drag_position) / frame_dt;
-    host.drag_velocity = if was_dragging && velocity.is_finite() {
-        clamp_speed(velocity, max_speed)
+    let window = finite_or(window, 0.0).max(0.0);
+    if was_dragging {
+        let before = host.drag_time.min((window - frame_dt).max(0.0));
+        let velocity =
+            ((position - host.drag_position) + host.drag_velocity * before) / (frame_dt + before);
+        host.drag_velocity = if velocity.is_finite() {
+            clamp_speed(velocity, max_speed)
+        } else {
+            Vector2D::zero()
+        };
+        host.drag_time = (host.drag_time + frame_dt).min(window);
     } else {
-        Vector2D::zero()
-    };
+        host.drag_velocity = Vector2D::zero();
+        host.drag_time = 0.0;
+    }
     host.drag_position = position;
 }
 

@@ -217,6 +217,7 @@ fn insert_missing_nodes<N: Clone + Eq + Hash>(
             host.dragging = before.dragging;
             host.drag_position = before.drag_position;
             host.drag_velocity = before.drag_velocity;
+            host.drag_time = before.drag_time;
         }
     }
 }

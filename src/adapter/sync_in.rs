@@ -173,6 +173,7 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
                 host,
                 was_dragging,
                 self.frame_dt,
+                self.config.throw_window,
                 self.config.max_speed,
             );
             disturbed = true;

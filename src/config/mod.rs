@@ -83,6 +83,15 @@ pub struct RapierLayoutConfig {
     /// A throw faster than this flies at the cap. Default: `40_000.0` (rapier's own
     /// 400 lengths/s at `length_unit` 100).
     pub max_speed: f32,
+    /// How far back, in seconds, a release looks to measure the pointer's speed it
+    /// throws the node with: the mean velocity of the drag over its last `throw_window`
+    /// seconds (earlier motion fades out exponentially). Pointers report at their own
+    /// rate, so a 60 Hz mouse on a 144 Hz display leaves frames in which a moving drag
+    /// did not move; measured over the last frame alone, a release that lands in one of
+    /// them throws nothing. Longer windows smooth more and carry a flick's speed into a
+    /// release after the hand has stopped for part of the window; `0` measures the last
+    /// frame alone. Default: `0.05` (egui's pointer velocity looks back 0.1 s).
+    pub throw_window: f32,
     /// Whether nodes collide. Off, the world holds no colliders at all (bodies get their
     /// mass directly), which saves the broad and narrow phases. Default: `true`.
     pub collisions: bool,
@@ -191,6 +200,7 @@ impl Default for RapierLayoutConfig {
             max_substeps: 16,
             length_unit: 100.0,
             max_speed: 40_000.0,
+            throw_window: 0.05,
             collisions: true,
             contact_model: ContactModel::Rapier,
             contact_events: false,

@@ -39,10 +39,12 @@ pub(crate) struct HostSync {
     pub(crate) stamp: u64,
     pub(crate) pinned: bool,
     pub(crate) dragging: bool,
-    /// The host's position of a dragged node at the last call, and the pointer's
-    /// velocity measured from it: what a release throws the node with.
+    /// The host's position of a dragged node at the last call, the pointer's velocity
+    /// over the drag's recent past (what a release throws the node with), and the time
+    /// that velocity covers, at most the throw window.
     pub(crate) drag_position: Point2D<f32>,
     pub(crate) drag_velocity: Vector2D<f32>,
+    pub(crate) drag_time: f32,
     /// Inserted during this call: its body may sit off the host's position (coincident
     /// nodes are spread), which is not a host move.
     pub(crate) fresh: bool,
@@ -65,6 +67,7 @@ impl HostSync {
             dragging: false,
             drag_position: position,
             drag_velocity: Vector2D::zero(),
+            drag_time: 0.0,
             fresh: true,
             synced: false,
             heat: 0.0,

@@ -1,0 +1,256 @@
+//! [graph-canvas-layout](graph_canvas_layout) as an [egui_graphs] layout: one persistent
+//! Rapier2D world behind a `GraphView`, so a thrown node keeps flying, pinned nodes hold,
+//! an edit heats only its neighbourhood, and the layout says when it rests.
+//!
+//! # Quick start
+//! ```no_run
+//! use egui_graphs::{Graph, GraphView};
+//! use graph_canvas_layout_egui_graphs::{RapierGraphLayout, RapierGraphState};
+//!
+//! fn show(ui: &mut egui::Ui, graph: &mut Graph) {
+//!     GraphView::<RapierGraphState, RapierGraphLayout>::new().show(ui, graph);
+//! }
+//! ```
+//! `examples/les_miserables.rs` shows Les Misérables in a window: `cargo run --release -p
+//! graph-canvas-layout-egui-graphs --example les_miserables`.
+//!
+//! # How it fits egui_graphs
+//! egui_graphs builds its layout from the state it keeps in egui's memory on every frame
+//! ([`Layout::from_state`](egui_graphs::Layout::from_state), then
+//! [`Layout::next`](egui_graphs::Layout::next), then the state is saved again). The world
+//! cannot be rebuilt every frame, so [`RapierGraphState`] holds it behind a shared handle
+//! that every copy of the state points to and that serde skips: the settings (running,
+//! pins, the configuration) persist with egui's memory, the world lives as long as the
+//! app does, and a restored app lays the graph out again from the saved positions.
+//!
+//! Every frame [`RapierGraphLayout`] passes the graph's nodes (their locations, by node
+//! index), its edges (weight 1), the nodes egui_graphs is dragging and the state's pins to
+//! [`RapierLayout::step`](graph_canvas_layout::Layout::step) with egui's stable frame
+//! time, and adds the deltas to the node locations. Releasing a dragged node throws it
+//! with the pointer's speed. While the layout moves it asks egui for another frame.
+//!
+//! A `StableGraph` reuses a removed node's index for the next node added: when you
+//! remove a node and add another in the same frame, call
+//! [`RapierGraphState::forget_node`] so the new node does not take over the old body.
+
+use std::collections::BTreeSet;
+use std::sync::{Arc, Mutex, PoisonError};
+
+use egui_graphs::{AnimatedState, DisplayEdge, DisplayNode, Graph, Layout, LayoutState};
+use graph_canvas_layout::euclid::default::Point2D;
+use graph_canvas_layout::{
+    CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, Layout as _, LayoutExtras,
+    RapierLayout, RapierLayoutConfig, RapierLayoutState,
+};
+use petgraph::stable_graph::{IndexType, NodeIndex};
+use petgraph::EdgeType;
+use serde::{Deserialize, Serialize};
+
+/// The world and the buffers it is fed from, shared by every copy of the state.
+struct World {
+    layout: RapierLayout<usize>,
+    state: RapierLayoutState,
+    scene: CanvasSceneInput<usize>,
+    extras: LayoutExtras<usize>,
+}
+
+/// A handle to the world: clones share it; serde skips it.
+#[derive(Clone, Default)]
+struct Handle(Arc<Mutex<Option<World>>>);
+
+impl std::fmt::Debug for Handle {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let world = self.0.lock().unwrap_or_else(PoisonError::into_inner);
+        f.debug_struct("Handle")
+            .field("has_world", &world.is_some())
+            .finish()
+    }
+}
+
+/// The layout's state in egui's memory: what persists (whether it runs, the pins, the
+/// configuration) and, behind a shared handle, the world.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(default)]
+pub struct RapierGraphState {
+    /// Whether frames step the layout. Default: `true`.
+    pub is_running: bool,
+    /// The layout's configuration; changes take effect on the next frame as
+    /// [`RapierLayout::config`] changes do. Default:
+    /// [`RapierLayoutConfig::force_directed`].
+    pub config: RapierLayoutConfig,
+    /// Pinned nodes, by node index: they hold where they are (and where the host or a
+    /// drag puts them).
+    pub pinned: BTreeSet<usize>,
+    /// Whether the layout was at rest after the last frame.
+    pub converged: bool,
+    /// The mean distance the graph's nodes moved in the last frame (0 at rest).
+    #[serde(skip)]
+    pub last_avg_displacement: Option<f32>,
+    /// Frames stepped.
+    pub step_count: u64,
+    #[serde(skip)]
+    world: Handle,
+}
+
+impl Default for RapierGraphState {
+    fn default() -> Self {
+        Self {
+            is_running: true,
+            config: RapierLayoutConfig::force_directed(),
+            pinned: BTreeSet::new(),
+            converged: false,
+            last_avg_displacement: None,
+            step_count: 0,
+            world: Handle::default(),
+        }
+    }
+}
+
+impl LayoutState for RapierGraphState {}
+
+impl AnimatedState for RapierGraphState {
+    fn is_running(&self) -> bool {
+        self.is_running
+    }
+    fn set_running(&mut self, v: bool) {
+        self.is_running = v;
+    }
+    fn last_avg_displacement(&self) -> Option<f32> {
+        self.last_avg_displacement
+    }
+    fn set_last_avg_displacement(&mut self, v: Option<f32>) {
+        self.last_avg_displacement = v;
+    }
+    fn step_count(&self) -> u64 {
+        self.step_count
+    }
+    fn set_step_count(&mut self, v: u64) {
+        self.step_count = v;
+    }
+}
+
+impl RapierGraphState {
+    /// A state with `config` instead of [`RapierLayoutConfig::force_directed`].
+    pub fn with_config(config: RapierLayoutConfig) -> Self {
+        Self {
+            config,
+            ..Self::default()
+        }
+    }
+
+    /// Drops the body of the node at `index`, so a node added later under the same
+    /// index starts afresh ([`RapierLayout::forget_node`]). Returns whether it had one.
+    pub fn forget_node(&self, index: usize) -> bool {
+        let mut world = self.world.0.lock().unwrap_or_else(PoisonError::into_inner);
+        world
+            .as_mut()
+            .is_some_and(|world| world.layout.forget_node(&index))
+    }
+
+    /// Runs `f` on the layout, once it exists (after the first frame), for what the
+    /// state does not show: [`RapierLayout::world`], [`RapierLayout::heat`],
+    /// [`RapierLayout::reheat`].
+    pub fn with_layout<T>(&self, f: impl FnOnce(&mut RapierLayout<usize>) -> T) -> Option<T> {
+        let mut world = self.world.0.lock().unwrap_or_else(PoisonError::into_inner);
+        world.as_mut().map(|world| f(&mut world.layout))
+    }
+}
+
+/// The egui_graphs [`Layout`] that steps a [`RapierLayout`]; built from its
+/// [`RapierGraphState`] every frame.
+#[derive(Debug, Default)]
+pub struct RapierGraphLayout {
+    state: RapierGraphState,
+}
+
+impl Layout<RapierGraphState> for RapierGraphLayout {
+    fn from_state(state: RapierGraphState) -> impl Layout<RapierGraphState> {
+        Self { state }
+    }
+
+    fn next<N, E, Ty, Ix, Dn, De>(&mut self, g: &mut Graph<N, E, Ty, Ix, Dn, De>, ui: &egui::Ui)
+    where
+        N: Clone,
+        E: Clone,
+        Ty: EdgeType,
+        Ix: IndexType,
+        Dn: DisplayNode<N, E, Ty, Ix>,
+        De: DisplayEdge<N, E, Ty, Ix, Dn>,
+    {
+        if !self.state.is_running || g.node_count() == 0 {
+            return;
+        }
+        let dt = ui.input(|i| i.stable_dt);
+        let state = &mut self.state;
+        let mut guard = state.world.0.lock().unwrap_or_else(PoisonError::into_inner);
+        let world = guard.get_or_insert_with(|| World {
+            layout: RapierLayout::new(state.config.clone()),
+            state: RapierLayoutState::default(),
+            scene: CanvasSceneInput::default(),
+            extras: LayoutExtras::default(),
+        });
+        if world.layout.config != state.config {
+            world.layout.config = state.config.clone();
+        }
+        read_graph(g, &mut world.scene, &mut world.extras);
+        world.extras.pinned.clear();
+        world.extras.pinned.extend(state.pinned.iter().copied());
+        let deltas = world.layout.step(
+            &world.scene,
+            &mut world.state,
+            dt,
+            &CanvasViewport::default(),
+            &world.extras,
+        );
+        let mut moved = 0.0_f32;
+        for (&index, delta) in &deltas {
+            if let Some(node) = g.g_mut().node_weight_mut(NodeIndex::new(index)) {
+                node.set_location(node.location() + egui::vec2(delta.x, delta.y));
+                moved += delta.length();
+            }
+        }
+        state.converged = world.layout.is_converged(&world.state);
+        state.last_avg_displacement = Some(moved / g.node_count() as f32);
+        state.step_count += 1;
+        if !state.converged {
+            ui.ctx().request_repaint();
+        }
+    }
+
+    fn state(&self) -> RapierGraphState {
+        self.state.clone()
+    }
+}
+
+/// The graph as the layout reads it: nodes by index at their locations, edges between
+/// node indices, and the nodes being dragged (by their own flag, which egui_graphs sets
+/// as the pointer takes and drops a node).
+fn read_graph<N, E, Ty, Ix, Dn, De>(
+    g: &Graph<N, E, Ty, Ix, Dn, De>,
+    scene: &mut CanvasSceneInput<usize>,
+    extras: &mut LayoutExtras<usize>,
+) where
+    N: Clone,
+    E: Clone,
+    Ty: EdgeType,
+    Ix: IndexType,
+    Dn: DisplayNode<N, E, Ty, Ix>,
+    De: DisplayEdge<N, E, Ty, Ix, Dn>,
+{
+    scene.nodes.clear();
+    extras.dragging.clear();
+    for (index, node) in g.nodes_iter() {
+        let p = node.location();
+        scene
+            .nodes
+            .push(CanvasNode::new(index.index(), Point2D::new(p.x, p.y)));
+        if node.dragged() {
+            extras.dragging.insert(index.index());
+        }
+    }
+    scene.edges.clear();
+    scene.edges.extend(g.edges_iter().filter_map(|(index, _)| {
+        let (a, b) = g.g().edge_endpoints(index)?;
+        Some(CanvasEdge::new(a.index(), b.index()))
+    }));
+}

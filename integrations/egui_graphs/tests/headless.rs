@@ -1,0 +1,185 @@
+//! The layout inside a real `GraphView`, frame by frame on a headless egui context: a
+//! graph straight from a `StableGraph` (every node at the origin) lays out to rest, a
+//! pinned node holds, and a node dragged and let go flies on.
+
+use egui::{Context, Pos2, RawInput, Rect};
+use egui_graphs::{
+    get_layout_state, set_layout_state, Graph, GraphView, SettingsInteraction, SettingsNavigation,
+};
+use graph_canvas_layout_egui_graphs::{RapierGraphLayout, RapierGraphState};
+use petgraph::stable_graph::{NodeIndex, StableGraph};
+use petgraph::Undirected;
+
+type G = Graph<(), (), Undirected>;
+
+/// Zachary's karate club, 34 members and 78 ties.
+#[rustfmt::skip]
+const KARATE: &[(u32, u32)] = &[
+    (0, 1), (0, 2), (0, 3), (0, 4), (0, 5), (0, 6), (0, 7), (0, 8), (0, 10), (0, 11),
+    (0, 12), (0, 13), (0, 17), (0, 19), (0, 21), (0, 31), (1, 2), (1, 3), (1, 7), (1, 13),
+    (1, 17), (1, 19), (1, 21), (1, 30), (2, 3), (2, 7), (2, 8), (2, 9), (2, 13), (2, 27),
+    (2, 28), (2, 32), (3, 7), (3, 12), (3, 13), (4, 6), (4, 10), (5, 6), (5, 10), (5, 16),
+    (6, 16), (8, 30), (8, 32), (8, 33), (9, 33), (13, 33), (14, 32), (14, 33), (15, 32),
+    (15, 33), (18, 32), (18, 33), (19, 33), (20, 32), (20, 33), (22, 32), (22, 33),
+    (23, 25), (23, 27), (23, 29), (23, 32), (23, 33), (24, 25), (24, 27), (24, 31),
+    (25, 31), (26, 29), (26, 33), (27, 33), (28, 31), (28, 33), (29, 32), (29, 33),
+    (30, 32), (30, 33), (31, 32), (31, 33), (32, 33),
+];
+
+fn karate() -> G {
+    let edges: Vec<(u32, u32)> = KARATE.to_vec();
+    G::from(&StableGraph::<(), (), Undirected>::from_edges(edges))
+}
+
+/// One egui context showing one graph view; the host's hand on the graph goes through
+/// `hand` between frames, as egui_graphs' own drag handling would.
+struct Window {
+    ctx: Context,
+    graph: G,
+    time: f64,
+}
+
+const FRAME: f32 = 1.0 / 60.0;
+
+impl Window {
+    fn new(graph: G) -> Self {
+        Self {
+            ctx: Context::default(),
+            graph,
+            time: 0.0,
+        }
+    }
+
+    fn frame(&mut self, before: impl FnOnce(&mut egui::Ui)) -> RapierGraphState {
+        self.time += f64::from(FRAME);
+        let input = RawInput {
+            screen_rect: Some(Rect::from_min_size(Pos2::ZERO, egui::vec2(800.0, 600.0))),
+            time: Some(self.time),
+            predicted_dt: FRAME,
+            ..RawInput::default()
+        };
+        let graph = &mut self.graph;
+        let mut before = Some(before);
+        let mut state = None;
+        let output = self.ctx.run_ui(input, |ui| {
+            if let Some(before) = before.take() {
+                before(ui);
+            }
+            // egui_graphs' own drag handling is off: the test moves the node as the
+            // pointer would.
+            GraphView::<RapierGraphState, RapierGraphLayout>::new()
+                .with_interactions(&SettingsInteraction::new().with_dragging_enabled(false))
+                .with_navigations(&SettingsNavigation::new().with_fit_to_screen_enabled(false))
+                .show(ui, graph);
+            state = Some(get_layout_state::<RapierGraphState>(ui, None));
+        });
+        // Nothing is painted: the font atlas egui uploads on its first frame is dropped.
+        output.drop_without_applying_deltas();
+        state.expect("the frame ran")
+    }
+
+    /// Frames until the layout rests (at most `max`); returns how many it took.
+    fn settle(&mut self, max: u32) -> Option<u32> {
+        (1..=max).find(|_| self.frame(|_| ()).converged)
+    }
+
+    fn location(&self, i: u32) -> Pos2 {
+        self.graph
+            .node(NodeIndex::new(i as usize))
+            .unwrap()
+            .location()
+    }
+}
+
+#[test]
+fn a_graph_with_every_node_at_the_origin_lays_out_to_rest() {
+    let mut window = Window::new(karate());
+    assert!(window
+        .graph
+        .nodes_iter()
+        .all(|(_, n)| n.location() == Pos2::ZERO));
+    let frames = window.settle(1_200);
+    assert!(frames.is_some(), "karate did not rest within 1,200 frames");
+    let positions: Vec<Pos2> = (0..34).map(|i| window.location(i)).collect();
+    assert!(positions.iter().all(|p| p.x.is_finite() && p.y.is_finite()));
+    // Disks of the default radius 16 end apart; the layout's last projection leaves
+    // overlaps under a unit, so 31 units between centres is a generous floor.
+    let mut closest = f32::INFINITY;
+    for (i, a) in positions.iter().enumerate() {
+        for b in &positions[i + 1..] {
+            closest = closest.min(a.distance(*b));
+        }
+    }
+    assert!(
+        closest > 31.0,
+        "after {frames:?} frames two nodes are {closest} units apart"
+    );
+    let spread = positions
+        .iter()
+        .map(|p| p.to_vec2().length())
+        .fold(0.0, f32::max);
+    assert!(
+        spread > 100.0,
+        "the graph stayed in a blob: farthest node {spread} units from the origin"
+    );
+}
+
+#[test]
+fn a_pinned_node_holds_where_it_is() {
+    let mut window = Window::new(karate());
+    window
+        .graph
+        .node_mut(NodeIndex::new(0))
+        .unwrap()
+        .set_location(Pos2::new(-250.0, 40.0));
+    window.frame(|ui| {
+        let mut state = RapierGraphState::default();
+        state.pinned.insert(0);
+        set_layout_state(ui, state, None);
+    });
+    window
+        .settle(1_200)
+        .expect("karate rests with node 0 pinned");
+    assert_eq!(
+        window.location(0),
+        Pos2::new(-250.0, 40.0),
+        "the pinned node moved"
+    );
+    let far = (1..34).map(|i| window.location(i).distance(Pos2::new(-250.0, 40.0)));
+    assert!(
+        far.fold(0.0, f32::max) > 100.0,
+        "the others piled onto the pin"
+    );
+}
+
+#[test]
+fn a_node_let_go_mid_drag_flies_on() {
+    let mut window = Window::new(karate());
+    window.settle(1_200).expect("karate rests");
+    // Node 16 is a leaf of the club's edge; drag it away from the centre at 600 units/s.
+    let centre = (0..34).fold(egui::Vec2::ZERO, |s, i| s + window.location(i).to_vec2()) / 34.0;
+    let start = window.location(16);
+    let out = (start.to_vec2() - centre).normalized();
+    let node = NodeIndex::new(16);
+    window.graph.node_mut(node).unwrap().set_dragged(true);
+    for k in 1..=10 {
+        let at = start + out * (10.0 * k as f32);
+        window.graph.node_mut(node).unwrap().set_location(at);
+        let state = window.frame(|_| ());
+        assert!(!state.converged, "a drag in progress counts as motion");
+    }
+    let released = window.location(16);
+    window.graph.node_mut(node).unwrap().set_dragged(false);
+    for _ in 0..15 {
+        window.frame(|_| ());
+    }
+    let beyond = (window.location(16) - released).dot(out);
+    assert!(
+        beyond > 20.0,
+        "let go at 600 units/s, it went {beyond} units on in 0.25 s"
+    );
+    assert!(
+        window.settle(1_200).is_some(),
+        "the layout did not rest again after the throw"
+    );
+}

@@ -5,6 +5,7 @@ use std::collections::{HashMap, HashSet};
 use euclid::default::Vector2D;
 use serde::{de::DeserializeOwned, Serialize};
 
+use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasSceneInput, CanvasViewport};
 
 /// The hasher behind [`DeltaMap`] and [`NodeSet`]: ahash, seeded per map.
@@ -16,6 +17,9 @@ pub type DeltaMap<N> = HashMap<N, Vector2D<f32>, IdHasher>;
 
 /// A set of node ids, as used in [`LayoutExtras`].
 pub type NodeSet<N> = HashSet<N, IdHasher>;
+
+/// A map from node ids, as used in [`LayoutExtras::forces`].
+pub type NodeMap<N, V> = HashMap<N, V, IdHasher>;
 
 /// Per-frame interaction state the host passes beside the scene.
 ///
@@ -33,6 +37,10 @@ pub struct LayoutExtras<N> {
     /// Nodes the user's pointer holds this frame. The host moves them; the body sits
     /// exactly where the host puts it, and the release throws it with the drag's speed.
     pub dragging: NodeSet<N>,
+    /// Per-node pulls toward a target x, y or ring, group membership and axis locks
+    /// ([`NodeForces`]); nodes without an entry feel none of them. Ids not in the scene
+    /// are ignored. Default: empty.
+    pub forces: NodeMap<N, NodeForces>,
 }
 
 impl<N> Default for LayoutExtras<N> {
@@ -40,6 +48,7 @@ impl<N> Default for LayoutExtras<N> {
         Self {
             pinned: NodeSet::default(),
             dragging: NodeSet::default(),
+            forces: NodeMap::default(),
         }
     }
 }

@@ -10,33 +10,32 @@
 //! ```
 //! use graph_canvas_layout::{
 //!     euclid::default::Point2D, CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport,
-//!     Layout, LayoutExtras, RapierLayout, RapierLayoutState,
+//!     Layout, LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState,
 //! };
 //!
-//! // The host's graph: positions in canvas pixels.
+//! // The host's graph. All three start at one point: they are spread a little and
+//! // the repulsion unfolds them.
 //! let mut scene = CanvasSceneInput::new(
-//!     vec![
-//!         CanvasNode::new("a", Point2D::new(0.0, 0.0)),
-//!         CanvasNode::new("b", Point2D::new(250.0, 0.0)),
-//!         CanvasNode::new("c", Point2D::new(0.0, 250.0)),
-//!     ],
+//!     ["a", "b", "c"].map(|id| CanvasNode::new(id, Point2D::origin())).to_vec(),
 //!     vec![CanvasEdge::new("a", "b"), CanvasEdge::new("b", "c")],
 //! );
-//! let mut layout = RapierLayout::default();
+//! // force_directed() lays graphs out; the default configuration is a physical canvas
+//! // without repulsion.
+//! let mut layout = RapierLayout::new(RapierLayoutConfig::force_directed());
 //! let mut state = RapierLayoutState::default();
 //! let mut extras = LayoutExtras::default();
 //! extras.pinned.insert("a"); // an anchor
 //!
-//! // One call per frame, with the frame's elapsed time.
-//! for _frame in 0..60 {
+//! // One call per frame with the frame's elapsed time; the host applies the deltas.
+//! // The viewport is part of the `Layout` trait and not read by this layout.
+//! for _frame in 0..300 {
 //!     let deltas = layout.step(&scene, &mut state, 1.0 / 60.0, &CanvasViewport::default(), &extras);
-//!     for node in &mut scene.nodes {
-//!         if let Some(delta) = deltas.get(&node.id) {
-//!             node.position += *delta; // the host owns its positions
-//!         }
-//!     }
+//!     scene.apply_deltas(&deltas);
 //! }
-//! assert_eq!(scene.nodes[0].position, Point2D::new(0.0, 0.0), "the pin held");
+//! assert!(layout.is_converged(&state), "at rest within 5 s");
+//! assert_eq!(scene.nodes[0].position, Point2D::origin(), "the pin held");
+//! let ab = (scene.nodes[1].position - scene.nodes[0].position).length();
+//! assert!(ab > 32.0, "unfolded: a and b are {ab} apart");
 //! ```
 //!
 //! ## The contract in short
@@ -55,10 +54,10 @@
 //!
 //! | module | owns |
 //! | --- | --- |
-//! | `input/` | the host's scene ([`CanvasSceneInput`]), the scene file format, what counts as bad input ([`LayoutError`]), the topology and its order-free hash |
+//! | `input/` | the host's scene ([`CanvasSceneInput`]), per-node forces ([`NodeForces`]), the scene file format, what counts as bad input ([`LayoutError`]), the topology and its order-free hash |
 //! | `config/` | [`RapierLayoutConfig`] and its parts: edge joints and body kinds, the solver and contacts, the [`Cooling`] schedule, the presets |
 //! | `adapter/` | [`RapierLayout`]: one file per stage of a call, below |
-//! | `forces/` | the forces put on bodies every substep, one per file (many-body repulsion over the Barnes–Hut tree, edge springs and link bias, centre pull), and the layout's own disk separation in `forces/collide/` |
+//! | `forces/` | the forces put on bodies every substep, one per file (many-body repulsion over the Barnes–Hut tree, edge springs and link bias, centre pull, the host's pulls toward an x, a y or a ring, groups), and the layout's own disk separation in `forces/collide/` |
 //! | `world/` | [`RapierSceneWorld`]: bodies, joints, springs scaled at once, sleep and wake, stepping, recovery of quarantined bodies, contact events |
 //! | `timestep.rs`, `layout.rs`, `quality` | frame time to substeps, the [`Layout`] trait, layout quality measures |
 //!
@@ -67,12 +66,13 @@
 //! 2. `adapter/matching.rs` matches scene nodes to bodies; when the topology changed,
 //!    `adapter/edits.rs` patches the world (`world/nodes.rs`, `world/edges.rs`).
 //! 3. `adapter/sync_in.rs` and `adapter/drag.rs` put the host's pins, drags, releases
-//!    and edits onto the bodies (`world/bodies.rs`, `world/activity.rs`).
+//!    and edits onto the bodies (`world/bodies.rs`, `world/activity.rs`);
+//!    `adapter/node_forces.rs` reads the host's per-node forces and axis locks.
 //! 4. `adapter/heat.rs` reheats a cooling layout after a disturbance, all of it or near
 //!    the disturbance only (`adapter/disturbance.rs`), and re-tunes its springs
 //!    (`world/spring_scale.rs`).
 //! 5. `adapter/substeps.rs` runs each substep: kinematic drives, `forces/`, one rapier
-//!    step (`world/stepping.rs`, `world/recovery.rs`).
+//!    step (`world/stepping.rs`, `world/recovery.rs`), the locked axes held.
 //! 6. `adapter/sync_out.rs` reads each free node's displacement; `adapter/rest.rs`
 //!    decides whether the layout is at rest and stops a cooled one.
 //!
@@ -96,6 +96,19 @@
 //!
 //! **Why does a node jump back?** It does not: the host's position is authoritative. A
 //! free node whose position differs from its body's is teleported to the host's.
+//!
+//! **Two `dt`s?** [`Layout::step`]'s `dt` is the frame time: how long since the last
+//! call (drags are measured against it). [`RapierLayoutState::dt`] is the physics'
+//! fixed timestep: each call covers its frame time in substeps no longer than that
+//! (default 1/60 s), up to [`RapierLayoutConfig::max_frame_time`].
+//!
+//! **What is the viewport for?** Nothing, here: [`CanvasViewport`] is part of the
+//! [`Layout`] contract for layouts that work on what is visible; this one lays out the
+//! whole graph. Pass `&CanvasViewport::default()`.
+//!
+//! **Bad input?** [`Layout::step`] leaves out what it cannot use and goes on;
+//! [`RapierLayout::skipped`] lists what the last call left out and why, and
+//! [`RapierLayout::problems`] lists every problem of a scene at once.
 //!
 //! **How fast can a node fly?** [`RapierLayoutConfig::max_speed`] (default 40,000 units
 //! per second) caps every body; faster throws fly at the cap.
@@ -124,6 +137,13 @@
 //! time (300 frames), then stops stepping the world until the next drag, release, host
 //! move or edit, which heats only the nodes near it.
 //!
+//! **Timelines, layers, rings, clusters?** Per-node [`NodeForces`] in
+//! [`LayoutExtras::forces`]: a pull toward a target x or y, a ring, a group key
+//! ([`RapierLayoutConfig::groups`]) and a lock of one axis, all inside the physics, so
+//! they combine with springs, contacts, drags and throws. Strengths are d3-force's; to
+//! hold nodes within a few units against `force_directed()`'s edge springs use 20 or
+//! more (0.1 to 1 is a gentle bias).
+//!
 //! **Nodes pass through each other right after loading?** With
 //! [`RapierLayoutConfig::force_directed`], contacts join the first unfolding once it
 //! has cooled to [`Cooling::first_contact_heat`] (about 0.8 s): a fresh scatter
@@ -149,18 +169,19 @@ pub use rapier2d;
 pub use adapter::{RapierLayout, RapierLayoutState, REST_TIME};
 pub use config::cooling::Cooling;
 pub use config::{
-    Accuracy, BodyKindPolicy, ContactModel, ContactSoftness, EdgeJoint, EdgeWeight,
+    Accuracy, BodyKindPolicy, ContactModel, ContactSoftness, EdgeJoint, EdgeWeight, GroupForce,
     RapierLayoutConfig, SolverSettings, SpringModel, TopologyUpdate,
 };
 pub use forces::barnes_hut::ManyBody;
 pub use forces::many_body::Repulsion;
+pub use input::node_forces::{AxisLock, AxisTarget, NodeForces, RingTarget};
 #[cfg(feature = "petgraph")]
 pub use input::petgraph::{spiral_position, NodeStart, SPIRAL_SPACING};
 pub use input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
 pub use input::scene_file::{SceneFile, SceneFileNode};
 pub use input::topology::topology_hash;
 pub use input::validation::{LayoutError, MAX_COORDINATE};
-pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeSet};
+pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeMap, NodeSet};
 pub use timestep::{StepPlan, DEFAULT_TIMESTEP, MIN_TIMESTEP};
 pub use world::bindings::{
     ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot, PhysicsMaterial, SceneBodyKind,

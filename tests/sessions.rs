@@ -10,7 +10,7 @@ mod common;
 
 use common::session::{run, Action};
 use common::FRAME;
-use graph_canvas_layout::{EdgeJoint, RapierLayoutConfig, TopologyUpdate};
+use graph_canvas_layout::{AxisLock, EdgeJoint, NodeForces, RapierLayoutConfig, TopologyUpdate};
 use proptest::prelude::*;
 
 const IDS: u32 = 12;
@@ -44,6 +44,22 @@ fn weight() -> impl Strategy<Value = f32> {
     ]
 }
 
+/// A node's forces: targets, a ring, a group, a lock, bad values, or none.
+fn node_forces() -> impl Strategy<Value = NodeForces> {
+    let strength = prop_oneof![
+        4 => prop_oneof![Just(0.1_f32), Just(1.0), Just(20.0)],
+        1 => prop_oneof![Just(-1.0_f32), Just(f32::NAN), Just(0.0)],
+    ];
+    prop_oneof![
+        2 => Just(NodeForces::default()),
+        2 => (coordinate(), strength.clone()).prop_map(|(x, s)| NodeForces::default().toward_x(x, s)),
+        1 => (coordinate(), strength.clone()).prop_map(|(y, s)| NodeForces::default().toward_y(y, s)),
+        2 => (coordinate(), 0.0_f32..300.0, strength).prop_map(|(c, r, s)| NodeForces::default().on_ring(c, -c, r, s)),
+        2 => (0_u32..3).prop_map(|g| NodeForces::default().in_group(g)),
+        2 => prop_oneof![Just(AxisLock::X), Just(AxisLock::Y)].prop_map(|a| NodeForces::default().locked(a)),
+    ]
+}
+
 fn action() -> impl Strategy<Value = Action> {
     let id = 0..IDS;
     prop_oneof![
@@ -59,6 +75,7 @@ fn action() -> impl Strategy<Value = Action> {
         1 => (id.clone(), coordinate(), coordinate()).prop_map(|(i, x, y)| Action::HostMove(i, x, y)),
         1 => id.clone().prop_map(Action::Poison),
         1 => (0usize..40, weight()).prop_map(|(i, w)| Action::Weigh(i, w)),
+        1 => (id.clone(), node_forces()).prop_map(|(i, f)| Action::Force(i, f)),
         6 => frame_time().prop_map(Action::Step),
     ]
 }
@@ -80,6 +97,7 @@ fn long_action() -> impl Strategy<Value = Action> {
         1 => (id.clone(), -200.0_f32..200.0, -200.0_f32..200.0).prop_map(|(i, x, y)| Action::HostMove(i, x, y)),
         1 => Just(Action::Settle),
         1 => (0usize..40, weight()).prop_map(|(i, w)| Action::Weigh(i, w)),
+        1 => (id.clone(), node_forces()).prop_map(|(i, f)| Action::Force(i, f)),
         12 => frame_time().prop_map(Action::Step),
     ]
 }

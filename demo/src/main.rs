@@ -113,20 +113,14 @@ impl Demo {
             .checkbox(&mut self.force_directed, "force-directed (repulsion)")
             .changed()
         {
-            let keep = (self.layout.config.accuracy, self.layout.config.edge_joint);
-            self.layout.config = if self.force_directed {
-                RapierLayoutConfig::force_directed()
-            } else {
-                RapierLayoutConfig::default()
-            };
-            (self.layout.config.accuracy, self.layout.config.edge_joint) = keep;
+            // The preset's accuracy comes with it; the chosen joint stays.
+            let keep = self.layout.config.edge_joint;
+            self.layout.config = preset(self.force_directed);
+            self.layout.config.edge_joint = keep;
         }
         ui.label("accuracy");
-        for (name, accuracy) in [
-            ("Fast", Accuracy::Fast),
-            ("Balanced", Accuracy::Balanced),
-            ("Precise", Accuracy::Precise),
-        ] {
+        let preset_accuracy = preset(self.force_directed).accuracy;
+        for (name, accuracy) in accuracy_choices(self.layout.config.accuracy, preset_accuracy) {
             ui.radio_value(&mut self.layout.config.accuracy, accuracy, name);
         }
         ui.label("edge joint");
@@ -311,6 +305,40 @@ impl eframe::App for Demo {
     }
 }
 
+/// The configuration of the force-directed preset or of the default one.
+fn preset(force_directed: bool) -> RapierLayoutConfig {
+    if force_directed {
+        RapierLayoutConfig::force_directed()
+    } else {
+        RapierLayoutConfig::default()
+    }
+}
+
+/// The accuracy radio buttons: the three named settings, the preset's own when it is
+/// custom (`force_directed()`'s is), and whatever else is in force, so one is always
+/// selected.
+fn accuracy_choices(current: Accuracy, preset: Accuracy) -> Vec<(String, Accuracy)> {
+    let mut choices = vec![
+        ("Fast".to_string(), Accuracy::Fast),
+        ("Balanced".to_string(), Accuracy::Balanced),
+        ("Precise".to_string(), Accuracy::Precise),
+    ];
+    for (whose, accuracy) in [("preset", preset), ("custom", current)] {
+        if let Accuracy::Custom {
+            solver_iterations,
+            substeps,
+            ..
+        } = accuracy
+        {
+            if choices.iter().all(|(_, a)| *a != accuracy) {
+                let name = format!("{whose}: {solver_iterations} iterations × {substeps} substeps");
+                choices.push((name, accuracy));
+            }
+        }
+    }
+    choices
+}
+
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let frames_left = args
@@ -341,4 +369,31 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         Box::new(move |_cc| Ok(Box::new(Demo::new(scene, frames_left)))),
     )?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_accuracy_in_force_is_always_a_choice() {
+        for force_directed in [false, true] {
+            let config = preset(force_directed);
+            let choices = accuracy_choices(config.accuracy, config.accuracy);
+            assert!(
+                choices.iter().any(|(_, a)| *a == config.accuracy),
+                "{:?} (force_directed {force_directed}) not among {choices:?}",
+                config.accuracy
+            );
+        }
+        // A custom accuracy of the host's own shows too, beside the preset's.
+        let own = Accuracy::Custom {
+            solver_iterations: 3,
+            internal_pgs_iterations: 1,
+            substeps: 2,
+        };
+        let choices = accuracy_choices(own, preset(true).accuracy);
+        assert_eq!(choices.len(), 5, "{choices:?}");
+        assert!(choices.iter().any(|(_, a)| *a == own));
+    }
 }

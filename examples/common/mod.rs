@@ -1,6 +1,8 @@
-//! What the examples share: the shipped scenes, and a host that owns its positions and
-//! calls `step` once per frame.
+//! What the examples share: the shipped scenes, a host that owns its positions and
+//! calls `step` once per frame, and SVG pictures (`svg.rs`).
 #![allow(dead_code)]
+
+pub mod svg;
 
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
@@ -67,6 +69,13 @@ impl Host {
             .find(|n| n.id == id)
             .unwrap_or_else(|| panic!("node {id} not in the scene"))
             .position
+    }
+
+    /// Moves node `id` in the scene (a host edit).
+    pub fn set_pos(&mut self, id: u32, p: Point2D<f32>) {
+        if let Some(n) = self.scene.nodes.iter_mut().find(|n| n.id == id) {
+            n.position = p;
+        }
     }
 
     /// The mean of the scene's positions.

@@ -6,7 +6,9 @@
 #![no_main]
 
 use arbitrary::{Result, Unstructured};
-use graph_canvas_layout::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, TopologyUpdate};
+use graph_canvas_layout::{
+    AxisLock, BodyKindPolicy, EdgeJoint, NodeForces, RapierLayoutConfig, TopologyUpdate,
+};
 use libfuzzer_sys::fuzz_target;
 
 #[path = "../../tests/common/mod.rs"]
@@ -82,7 +84,7 @@ fn frame_time(u: &mut Unstructured) -> Result<f32> {
 
 fn action(u: &mut Unstructured) -> Result<Action> {
     let id = |u: &mut Unstructured| u.int_in_range(0..=IDS - 1);
-    Ok(match u.int_in_range(0..=15)? {
+    Ok(match u.int_in_range(0..=16)? {
         0 => Action::AddNode(id(u)?, coordinate(u)?, coordinate(u)?),
         1 => Action::AddDragged(id(u)?, coordinate(u)?, coordinate(u)?),
         2 => Action::RemoveNode(id(u)?),
@@ -105,7 +107,38 @@ fn action(u: &mut Unstructured) -> Result<Action> {
                 n => n as f32 / 2.0,
             },
         ),
+        15 if u.ratio(1, 2)? => Action::Force(id(u)?, node_forces(u)?),
         _ => Action::Step(frame_time(u)?),
+    })
+}
+
+/// A node's forces: a target, a ring, a group or a lock (bad values too), or none.
+fn node_forces(u: &mut Unstructured) -> Result<NodeForces> {
+    let strength = |u: &mut Unstructured| -> Result<f32> {
+        Ok(match u.int_in_range(0..=5)? {
+            0 => f32::from_bits(u.arbitrary()?),
+            1 => 0.1,
+            2 => 20.0,
+            _ => 1.0,
+        })
+    };
+    let none = NodeForces::default();
+    Ok(match u.int_in_range(0..=5)? {
+        0 => none,
+        1 => none.toward_x(coordinate(u)?, strength(u)?),
+        2 => none.toward_y(coordinate(u)?, strength(u)?),
+        3 => none.on_ring(
+            coordinate(u)?,
+            coordinate(u)?,
+            coordinate(u)?.abs(),
+            strength(u)?,
+        ),
+        4 => none.in_group(u.int_in_range(0..=2)?),
+        _ => none.locked(if u.arbitrary()? {
+            AxisLock::X
+        } else {
+            AxisLock::Y
+        }),
     })
 }
 

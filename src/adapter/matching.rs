@@ -35,6 +35,10 @@ pub(super) struct Matching<N> {
     /// The edges of the scene the topology was last computed from, to skip that work
     /// while the host passes the same edges.
     edges: Vec<(N, N, u32)>,
+    /// Scene nodes this call left out: unusable values or a repeated id.
+    pub(super) bad_nodes: usize,
+    /// Repeated ids and bad edges in the scene the topology was last computed from.
+    pub(super) topology_problems: usize,
 }
 
 impl<N> Default for Matching<N> {
@@ -44,6 +48,8 @@ impl<N> Default for Matching<N> {
             matches: Vec::new(),
             previous: Vec::new(),
             edges: Vec::new(),
+            bad_nodes: 0,
+            topology_problems: 0,
         }
     }
 }
@@ -66,11 +72,13 @@ impl<N: Clone + Eq + Hash> Matching<N> {
         let stamp = self.stamp;
         let Some(world) = world else {
             self.matches.clear();
+            self.bad_nodes = 0;
             return true;
         };
         let check_pins = !extras.pinned.is_empty();
         let mut changed = false;
         let mut seen = 0;
+        let mut bad = 0;
         std::mem::swap(&mut self.matches, &mut self.previous);
         self.matches.clear();
         for (i, node) in scene.nodes.iter().enumerate() {
@@ -92,19 +100,24 @@ impl<N: Clone + Eq + Hash> Matching<N> {
                     changed |= host.pinned != pinned;
                     s as u32
                 }
-                Some(_) => NO_SLOT, // a repeated id
+                Some(_) => {
+                    bad += 1;
+                    NO_SLOT // a repeated id
+                }
                 None => {
                     // A usable node without a body is new (or a repeat of a new id).
                     changed |= valid;
                     NO_SLOT
                 }
             };
+            bad += usize::from(!valid);
             self.matches.push(NodeMatch {
                 slot,
                 valid,
                 pinned,
             });
         }
+        self.bad_nodes = bad;
         changed || seen != world.slot_count()
     }
 
@@ -159,8 +172,10 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             return None;
         }
         let world = self.world.as_ref();
-        Some(Topology::of(scene, extras, |id| {
+        let topology = Topology::of(scene, extras, |id| {
             world.is_some_and(|w| w.contains_node(id))
-        }))
+        });
+        self.matching.topology_problems = topology.problems;
+        Some(topology)
     }
 }

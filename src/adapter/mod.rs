@@ -11,10 +11,12 @@
 //!    input, flipped in place; pinned and dragged bodies are driven to the host's
 //!    positions; a release throws the node with the pointer's speed; free bodies the
 //!    host moved are put where the host put them.
+//!    Then the host's per-node forces (`node_forces.rs`): the table the pulls read,
+//!    wakes for changed ones, axis locks.
 //! 5. **Heat** (`heat.rs`): a disturbance reheats a cooling layout; a halted one stays
 //!    halted until disturbed.
 //! 6. **Simulate** (`substeps.rs`): per substep, kinematic drives, the body forces of
-//!    `forces/`, one rapier step.
+//!    `forces/`, one rapier step, the locked axes held.
 //! 7. **Sync out** (`sync_out.rs`): each free node's displacement during this call.
 //! 8. **Rest** (`rest.rs`): the cold stop and the convergence signal.
 
@@ -37,8 +39,10 @@ mod drag;
 mod edits;
 mod heat;
 mod matching;
+mod node_forces;
 mod reconfigure;
 mod rest;
+mod skipped;
 mod state;
 mod substeps;
 mod sync_in;
@@ -106,6 +110,8 @@ pub struct RapierLayout<N> {
     rest: Rest,
     forces: Forces<N>,
     recovered: Vec<N>,
+    /// What the last call left out ([`RapierLayout::skipped`]).
+    skipped: Vec<LayoutError<N>>,
     /// The timestep new and re-tuned joints are tuned for: this call's fixed timestep.
     joint_dt: f32,
     /// The gravity of the last call: a change is a disturbance.
@@ -158,6 +164,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             rest: Rest::default(),
             forces: Forces::default(),
             recovered: Vec::new(),
+            skipped: Vec::new(),
             joint_dt: DEFAULT_TIMESTEP,
             gravity: Vector2D::zero(),
         }
@@ -326,10 +333,11 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// or edge, and the call changes nothing.
     ///
     /// # Errors
-    /// [`LayoutError`] for a non-finite position or one beyond
+    /// The first [`LayoutError`] in scene order for a non-finite position or one beyond
     /// ±[`MAX_COORDINATE`](crate::MAX_COORDINATE), a NaN, infinite or negative radius, a
-    /// repeated node id, an edge naming a node that is not in the scene, or a negative or
-    /// non-finite edge weight.
+    /// repeated node id, an edge naming a node that is not in the scene, a negative or
+    /// non-finite edge weight, or a bad value in [`LayoutExtras::forces`].
+    /// [`RapierLayout::problems`] lists them all.
     ///
     /// # Example
     /// ```
@@ -351,7 +359,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         _viewport: &CanvasViewport,
         extras: &LayoutExtras<N>,
     ) -> Result<DeltaMap<N>, LayoutError<N>> {
-        validate(scene)?;
+        validate(scene, extras)?;
         Ok(self.advance(scene, state, dt, extras))
     }
 }
@@ -359,12 +367,21 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
 impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
     type State = RapierLayoutState;
 
-    /// Advances the layout by `dt` seconds and returns each free node's displacement.
+    /// Advances the layout by `dt` seconds of frame time and returns each free node's
+    /// displacement.
+    ///
+    /// `dt` is the frame's real elapsed time (what drag speeds are measured against);
+    /// the physics advances in fixed substeps of at most [`RapierLayoutState::dt`]
+    /// (default 1/60 s) that cover it, up to
+    /// [`max_frame_time`](RapierLayoutConfig::max_frame_time). `viewport` is not read by
+    /// this layout (it is part of the [`Layout`] contract for layouts that lay out only
+    /// what is visible): pass `&CanvasViewport::default()`.
     ///
     /// Never panics on bad input: a node with a non-finite position or an invalid
     /// radius is left out for this call (a node that already has a body stays where it
     /// is, with no delta, until the host gives it usable values), repeated ids after the
-    /// first are ignored, and edges naming missing nodes are dropped.
+    /// first are ignored, edges naming missing nodes are dropped, and bad weights and
+    /// forces are left out. [`RapierLayout::skipped`] lists what the call left out.
     fn step(
         &mut self,
         scene: &CanvasSceneInput<N>,
@@ -381,7 +398,9 @@ impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
     /// time, nothing (a drag, a release, a host move, a topology change) disturbed it
     /// meanwhile, and every dynamic body is asleep; or a [`Cooling`](crate::Cooling)
     /// schedule has ended and halted the world. Once true, calls report no motion until
-    /// something disturbs the layout.
+    /// something disturbs the layout. Nodes the last call left out
+    /// ([`RapierLayout::skipped`]) do not count: the layout can rest while one waits for
+    /// usable values.
     fn is_converged(&self, _state: &RapierLayoutState) -> bool {
         self.world.is_some() && self.rest.converged
     }
@@ -399,6 +418,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         state.step_count = state.step_count.wrapping_add(1);
         if scene.nodes.is_empty() {
             self.drop_world();
+            (self.matching.bad_nodes, self.matching.topology_problems) = (0, 0);
+            self.forces.targets.problems = 0;
+            self.note_skipped(scene, extras);
             return DeltaMap::default();
         }
         let plan = self.plan_frame(state, dt);
@@ -408,6 +430,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let mut disturbed = self.sync_topology(scene, extras);
         // NOTE: every drive comes with a disturbance from `sync_in`.
         disturbed |= self.sync_in(scene, extras, plan.frame_dt);
+        disturbed |= self.sync_node_forces(scene, extras);
+        self.note_skipped(scene, extras);
         let gravity = Vector2D::new(
             finite_or(state.gravity_x, 0.0),
             finite_or(state.gravity_y, 0.0),

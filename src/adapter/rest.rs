@@ -83,6 +83,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 if self.config.separates_disks() && world.contacts_enabled() {
                     // No overlap is left standing.
                     self.forces.part_overlaps(world);
+                    super::node_forces::hold_locked_axes(world, &self.forces.targets.locks);
                 }
                 world.halt_dynamic_bodies();
                 // Asleep, so that a later local disturbance wakes only what it reaches.

@@ -8,7 +8,10 @@ use serde::{Deserialize, Serialize};
 pub struct RapierLayoutState {
     /// Number of `step` calls made with this state.
     pub step_count: u64,
-    /// The fixed physics timestep in seconds; `0.0` (or any unusable value) means 1/60.
+    /// The fixed physics timestep in seconds, the longest substep a call takes; `0.0`
+    /// (or any unusable value) means 1/60. Not the frame time: that is `step`'s own `dt`
+    /// argument, which a call covers in substeps of at most this length. A shorter
+    /// timestep buys accuracy for substeps (cost).
     pub dt: f32,
     /// Gravity along x, in world units per second². Default: `0.0`.
     pub gravity_x: f32,

@@ -8,6 +8,7 @@ use std::hash::Hash;
 use euclid::default::Vector2D;
 
 use super::drag::drive_kinematic_bodies;
+use super::node_forces::hold_locked_axes;
 use super::state::RapierLayoutState;
 use super::RapierLayout;
 use crate::config::SolverSettings;
@@ -86,6 +87,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             }
             world.step(gravity);
             self.forces.settle(world, plan.substep_dt);
+            if !self.forces.targets.locks.is_empty() {
+                hold_locked_axes(world, &self.forces.targets.locks);
+            }
         }
     }
 

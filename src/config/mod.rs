@@ -2,7 +2,7 @@
 //! effect, its trade-off and its default.
 //!
 //! The parts live beside it: what edges and pins become (`edge_joint`), the solver and
-//! contacts (`solver`), the cooling schedule (`cooling`) and the presets for laying
+//! contacts (`solver`), the cooling schedule (`cooling`), groups (`groups`) and the presets for laying
 //! graphs out (`presets`). The adapter reads the configuration once per call and decides
 //! there what a change costs (a rebuild, new joints, or nothing).
 
@@ -13,11 +13,13 @@ use crate::world::bindings::PhysicsMaterial;
 
 pub(crate) mod cooling;
 pub(crate) mod edge_joint;
+pub(crate) mod groups;
 mod presets;
 pub(crate) mod solver;
 
 use cooling::Cooling;
 pub use edge_joint::{BodyKindPolicy, EdgeJoint, EdgeWeight, SpringModel};
+pub use groups::GroupForce;
 pub use solver::{Accuracy, ContactModel, ContactSoftness, SolverSettings};
 
 /// What to do when the topology hash changes.
@@ -173,6 +175,10 @@ pub struct RapierLayoutConfig {
     /// check per thrown node per call. Default: `None`
     /// ([`RapierLayoutConfig::force_directed`] uses `1.0`).
     pub flight_damping: Option<f32>,
+    /// How nodes with a group key ([`NodeForces::group`](crate::NodeForces::group))
+    /// hold together and keep apart ([`GroupForce`]). Does nothing while no node has a
+    /// group. Default: [`GroupForce::default`].
+    pub groups: GroupForce,
 }
 
 impl RapierLayoutConfig {
@@ -214,6 +220,7 @@ impl Default for RapierLayoutConfig {
             contact_softness: ContactSoftness::default(),
             link_bias: 0.0,
             flight_damping: None,
+            groups: GroupForce::default(),
         }
     }
 }

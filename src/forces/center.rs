@@ -5,6 +5,7 @@
 
 use std::hash::Hash;
 
+use super::targets::NodeTargets;
 use super::{BodyForce, ForceContext, ForceSums};
 use crate::config::RapierLayoutConfig;
 use crate::sanitize::finite_or;
@@ -17,7 +18,7 @@ use crate::Repulsion;
 pub(crate) struct CenterPull;
 
 impl<N: Clone + Eq + Hash> BodyForce<N> for CenterPull {
-    fn is_active(&self, config: &RapierLayoutConfig) -> bool {
+    fn is_active(&self, config: &RapierLayoutConfig, _: &NodeTargets) -> bool {
         config.repulsion.is_some()
     }
 

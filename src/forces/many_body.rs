@@ -9,6 +9,7 @@ use euclid::default::Point2D;
 use serde::{Deserialize, Serialize};
 
 use super::barnes_hut::ManyBody;
+use super::targets::NodeTargets;
 use super::{BodyForce, ForceContext, ForceSums};
 use crate::config::RapierLayoutConfig;
 use crate::sanitize::finite_or;
@@ -56,7 +57,7 @@ pub(crate) struct ManyBodyForce {
 }
 
 impl<N: Clone + Eq + Hash> BodyForce<N> for ManyBodyForce {
-    fn is_active(&self, config: &RapierLayoutConfig) -> bool {
+    fn is_active(&self, config: &RapierLayoutConfig, _: &NodeTargets) -> bool {
         config.repulsion.is_some()
     }
 

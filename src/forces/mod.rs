@@ -6,6 +6,8 @@
 //! - `springs.rs`: the edge springs applied as forces, and d3-force's uneven share of a
 //!   spring's pull between its ends (link bias);
 //! - `center.rs`: the pull toward the centre;
+//! - `position.rs`, `radial.rs`, `group.rs`: the host's per-node pulls toward an x, a y
+//!   or a ring, and groups held together, read from the table in `targets.rs`;
 //! - `collide.rs`: the layout's own disk separation (not a force: the velocity changes
 //!   that part disks, worked out after the forces).
 //!
@@ -30,8 +32,14 @@ use crate::world::RapierSceneWorld;
 pub(crate) mod barnes_hut;
 mod center;
 mod collide;
+mod group;
 pub(crate) mod many_body;
+mod position;
+mod radial;
 mod springs;
+pub(crate) mod targets;
+
+use targets::NodeTargets;
 
 /// What a force reads on one substep.
 pub(crate) struct ForceContext<'a, N> {
@@ -49,6 +57,8 @@ pub(crate) struct ForceContext<'a, N> {
     pub(crate) heat: f32,
     /// The substep's length, in seconds.
     pub(crate) dt: f32,
+    /// The host's per-node forces, by world slot.
+    pub(crate) targets: &'a NodeTargets,
 }
 
 /// What one substep reads of every body, by world slot, gathered once.
@@ -140,8 +150,8 @@ pub(crate) struct ForceSums {
 
 /// One force on bodies, applied every substep.
 pub(crate) trait BodyForce<N>: Send + Sync {
-    /// Whether `config` asks for this force at all.
-    fn is_active(&self, config: &RapierLayoutConfig) -> bool;
+    /// Whether `config` or the host's per-node `targets` ask for this force at all.
+    fn is_active(&self, config: &RapierLayoutConfig, targets: &NodeTargets) -> bool;
 
     /// Adds this substep's force on every pushed body to `out` (by world slot; as long
     /// as the world has bodies).
@@ -157,6 +167,8 @@ pub(crate) struct Forces<N> {
     bodies: Bodies,
     sums: ForceSums,
     collide: collide::Collide,
+    /// The host's per-node forces for this call (`adapter/node_forces.rs` fills it).
+    pub(crate) targets: NodeTargets,
 }
 
 impl<N: Clone + Eq + Hash> Default for Forces<N> {
@@ -167,12 +179,16 @@ impl<N: Clone + Eq + Hash> Default for Forces<N> {
             Box::new(many_body::ManyBodyForce::default()),
             Box::new(springs::SpringForce::default()),
             Box::new(center::CenterPull),
+            Box::new(position::PositionPull),
+            Box::new(radial::RadialPull),
+            Box::new(group::GroupPull::default()),
         ];
         Self {
             list,
             bodies: Bodies::default(),
             sums: ForceSums::default(),
             collide: collide::Collide::default(),
+            targets: NodeTargets::default(),
         }
     }
 }
@@ -189,11 +205,16 @@ impl<N: Clone + Eq + Hash> Forces<N> {
     /// Whether `config` asks for any force on bodies, or for the layout's own disk
     /// separation.
     pub(crate) fn any_active(&self, config: &RapierLayoutConfig) -> bool {
-        config.separates_disks() || self.list.iter().any(|force| force.is_active(config))
+        config.separates_disks()
+            || self
+                .list
+                .iter()
+                .any(|force| force.is_active(config, &self.targets))
     }
 
     /// Forgets every force's cache (the world was dropped or built anew).
     pub(crate) fn reset(&mut self) {
+        self.targets = NodeTargets::default();
         for force in &mut self.list {
             force.reset();
         }
@@ -231,9 +252,10 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             pushed: &self.bodies.pushed,
             heat,
             dt,
+            targets: &self.targets,
         };
         for force in &mut self.list {
-            if force.is_active(config) {
+            if force.is_active(config, &self.targets) {
                 force.apply(&frame, &mut self.sums);
             }
         }

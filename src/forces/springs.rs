@@ -16,6 +16,7 @@
 
 use std::hash::Hash;
 
+use super::targets::NodeTargets;
 use super::{BodyForce, ForceContext, ForceSums};
 use crate::config::{RapierLayoutConfig, SpringModel};
 use crate::sanitize::{finite_or, positive_or};
@@ -47,7 +48,7 @@ pub(crate) struct SpringForce {
 }
 
 impl<N: Clone + Eq + Hash> BodyForce<N> for SpringForce {
-    fn is_active(&self, config: &RapierLayoutConfig) -> bool {
+    fn is_active(&self, config: &RapierLayoutConfig, _: &NodeTargets) -> bool {
         config.spring_model == SpringModel::Forces || finite_or(config.link_bias, 0.0) > 0.0
     }
 

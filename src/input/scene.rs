@@ -48,6 +48,20 @@ impl<N> CanvasNode<N> {
         self.radius = radius;
         self
     }
+
+    /// This node with a label (the layout does not read it; a host draws it).
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasNode};
+    /// let node = CanvasNode::new(3_u32, Point2D::origin()).with_label("Valjean");
+    /// assert_eq!(node.label.as_deref(), Some("Valjean"));
+    /// ```
+    #[must_use]
+    pub fn with_label(mut self, label: impl Into<String>) -> Self {
+        self.label = Some(label.into());
+        self
+    }
 }
 
 /// One edge of the host's graph. Edges are undirected for the physics: `(a, b)`,
@@ -120,24 +134,38 @@ impl<N> CanvasSceneInput<N> {
 
 impl<N: Eq + std::hash::Hash> CanvasSceneInput<N> {
     /// Adds each node's delta to its position: what a host that keeps its positions in
-    /// the scene does with the map [`Layout::step`](crate::Layout::step) returns.
+    /// the scene does with the map [`Layout::step`](crate::Layout::step) returns. A
+    /// repeated id moves at its first occurrence only, the one `step` lays out (it
+    /// ignores the repeats).
     ///
     /// # Example
     /// ```
     /// use graph_canvas_layout::{euclid::default::{Point2D, Vector2D}, CanvasNode, CanvasSceneInput, DeltaMap};
-    /// let mut scene = CanvasSceneInput::new(vec![CanvasNode::new(1_u32, Point2D::new(1.0, 1.0))], vec![]);
+    /// let mut scene = CanvasSceneInput::new(
+    ///     vec![CanvasNode::new(1_u32, Point2D::new(1.0, 1.0)), CanvasNode::new(1, Point2D::new(5.0, 5.0))],
+    ///     vec![],
+    /// );
     /// let mut deltas = DeltaMap::default();
     /// deltas.insert(1, Vector2D::new(2.0, 0.0));
     /// scene.apply_deltas(&deltas);
     /// assert_eq!(scene.nodes[0].position, Point2D::new(3.0, 1.0));
+    /// assert_eq!(scene.nodes[1].position, Point2D::new(5.0, 5.0), "the repeat stays");
     /// ```
     pub fn apply_deltas(&mut self, deltas: &crate::DeltaMap<N>) {
         if deltas.is_empty() {
             return;
         }
+        // The ids moved so far, borrowed from the map's keys.
+        let mut moved: std::collections::HashSet<&N, crate::IdHasher> =
+            std::collections::HashSet::with_capacity_and_hasher(
+                deltas.len(),
+                crate::IdHasher::default(),
+            );
         for node in &mut self.nodes {
-            if let Some(delta) = deltas.get(&node.id) {
-                node.position += *delta;
+            if let Some((id, delta)) = deltas.get_key_value(&node.id) {
+                if moved.insert(id) {
+                    node.position += *delta;
+                }
             }
         }
     }

@@ -50,6 +50,9 @@ pub(crate) struct Topology {
     pub(crate) hash: u64,
     /// The order-free hash of the edges' weights.
     pub(crate) weight_hash: u64,
+    /// Repeated node ids, edges left out for naming a node the world does not model,
+    /// and edges with an unusable weight: bad input a host may want reported.
+    pub(crate) problems: usize,
 }
 
 impl Topology {
@@ -66,8 +69,10 @@ impl Topology {
         let mut nodes = Vec::with_capacity(scene.nodes.len());
         let mut hash: u64 = 0;
         let mut ids = Vec::with_capacity(scene.nodes.len());
+        let mut problems = 0;
         for (i, node) in scene.nodes.iter().enumerate() {
             if first.contains_key(&node.id) {
+                problems += 1;
                 ids.push(0);
                 continue;
             }
@@ -88,7 +93,11 @@ impl Topology {
         let mut weights = Vec::with_capacity(scene.edges.len());
         let mut weight_hash: u64 = 0;
         for edge in &scene.edges {
+            if usable_weight(edge.weight).to_bits() != edge.weight.to_bits() {
+                problems += 1;
+            }
             let (Some(&a), Some(&b)) = (first.get(&edge.source), first.get(&edge.target)) else {
+                problems += 1;
                 continue;
             };
             if a == b || !seen.insert((a.min(b), a.max(b))) {
@@ -109,6 +118,7 @@ impl Topology {
             weights,
             hash: if hash == 0 { 1 } else { hash },
             weight_hash,
+            problems,
         }
     }
 }

@@ -6,8 +6,9 @@ use std::hash::Hash;
 
 use euclid::default::Point2D;
 
+use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
-use crate::layout::IdHasher;
+use crate::layout::{IdHasher, LayoutExtras};
 
 /// The largest coordinate a node's position may have, in world units (either sign).
 /// Beyond it an `f32` resolves positions to more than 64 units, rapier's contacts and
@@ -72,6 +73,17 @@ pub enum LayoutError<N> {
         /// The weight the host gave.
         weight: f32,
     },
+    /// A node's entry in [`LayoutExtras::forces`](crate::LayoutExtras::forces) has a
+    /// non-finite target or centre, or a negative or non-finite radius or strength.
+    InvalidNodeForce {
+        /// The node.
+        node: N,
+        /// The part with the bad value: `"x"`, `"y"`, `"x strength"`, `"y strength"`,
+        /// `"ring centre"`, `"ring radius"` or `"ring strength"`.
+        part: &'static str,
+        /// The value the host gave.
+        value: f32,
+    },
 }
 
 impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
@@ -117,6 +129,10 @@ impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
                 f,
                 "edge {edge} ({source:?} -> {target:?}) has an invalid weight {weight} (must be finite and >= 0)"
             ),
+            LayoutError::InvalidNodeForce { node, part, value } => write!(
+                f,
+                "node {node:?} has an invalid {part} {value} in its forces (targets must be finite, radii and strengths finite and >= 0)"
+            ),
         }
     }
 }
@@ -134,53 +150,86 @@ pub(crate) fn position_in_range(p: Point2D<f32>) -> bool {
     p.x.abs() <= MAX_COORDINATE && p.y.abs() <= MAX_COORDINATE
 }
 
-/// The first problem in `scene`, in scene order: nodes first, then edges.
+/// The first problem in `scene`, in scene order: nodes first, then edges, then the
+/// forces of the scene's nodes in `extras`.
 pub(crate) fn validate<N: Clone + Eq + Hash>(
     scene: &CanvasSceneInput<N>,
+    extras: &LayoutExtras<N>,
 ) -> Result<(), LayoutError<N>> {
+    match collect(scene, extras, true).pop() {
+        Some(problem) => Err(problem),
+        None => Ok(()),
+    }
+}
+
+/// Every problem in `scene` and `extras`, in the order [`validate`] finds the first.
+pub(crate) fn problems<N: Clone + Eq + Hash>(
+    scene: &CanvasSceneInput<N>,
+    extras: &LayoutExtras<N>,
+) -> Vec<LayoutError<N>> {
+    collect(scene, extras, false)
+}
+
+/// The problems of `scene` and `extras` in scene order, only the first when `first`.
+fn collect<N: Clone + Eq + Hash>(
+    scene: &CanvasSceneInput<N>,
+    extras: &LayoutExtras<N>,
+    first_only: bool,
+) -> Vec<LayoutError<N>> {
+    let mut found = Vec::new();
+    macro_rules! report {
+        ($problem:expr) => {{
+            found.push($problem);
+            if first_only {
+                return found;
+            }
+        }};
+    }
     let mut first: HashMap<&N, usize, IdHasher> =
         HashMap::with_capacity_and_hasher(scene.nodes.len(), IdHasher::default());
     for (i, node) in scene.nodes.iter().enumerate() {
         if !(node.position.x.is_finite() && node.position.y.is_finite()) {
-            return Err(LayoutError::NonFinitePosition {
+            report!(LayoutError::NonFinitePosition {
                 node: node.id.clone(),
                 position: node.position,
             });
-        }
-        if !position_in_range(node.position) {
-            return Err(LayoutError::PositionOutOfRange {
+        } else if !position_in_range(node.position) {
+            report!(LayoutError::PositionOutOfRange {
                 node: node.id.clone(),
                 position: node.position,
             });
         }
         if !(node.radius.is_finite() && node.radius >= 0.0) {
-            return Err(LayoutError::InvalidRadius {
+            report!(LayoutError::InvalidRadius {
                 node: node.id.clone(),
                 radius: node.radius,
             });
         }
         if let Some(&j) = first.get(&node.id) {
-            return Err(LayoutError::DuplicateNode {
+            report!(LayoutError::DuplicateNode {
                 node: node.id.clone(),
                 first: j,
                 second: i,
             });
+        } else {
+            first.insert(&node.id, i);
         }
-        first.insert(&node.id, i);
     }
     for (i, edge) in scene.edges.iter().enumerate() {
         for end in [&edge.source, &edge.target] {
             if !first.contains_key(end) {
-                return Err(LayoutError::UnknownEdgeEndpoint {
+                report!(LayoutError::UnknownEdgeEndpoint {
                     edge: i,
                     source: edge.source.clone(),
                     target: edge.target.clone(),
                     missing: end.clone(),
                 });
+                // One error per edge: its other end adds nothing a host can act on.
+                break;
             }
         }
         if !(edge.weight.is_finite() && edge.weight >= 0.0) {
-            return Err(LayoutError::InvalidEdgeWeight {
+            report!(LayoutError::InvalidEdgeWeight {
                 edge: i,
                 source: edge.source.clone(),
                 target: edge.target.clone(),
@@ -188,5 +237,20 @@ pub(crate) fn validate<N: Clone + Eq + Hash>(
             });
         }
     }
-    Ok(())
+    if !extras.forces.is_empty() {
+        for (i, node) in scene.nodes.iter().enumerate() {
+            if first.get(&node.id) != Some(&i) {
+                continue; // a repeat, reported above
+            }
+            let problem = extras.forces.get(&node.id).and_then(NodeForces::problem);
+            if let Some((part, value)) = problem {
+                report!(LayoutError::InvalidNodeForce {
+                    node: node.id.clone(),
+                    part,
+                    value,
+                });
+            }
+        }
+    }
+    found
 }

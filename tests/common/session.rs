@@ -7,7 +7,8 @@ use std::collections::{HashMap, HashSet};
 
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
-    CanvasSceneInput, DeltaMap, EdgeJoint, EdgeWeight, Layout, RapierLayoutConfig, MAX_COORDINATE,
+    AxisLock, CanvasSceneInput, DeltaMap, EdgeJoint, EdgeWeight, Layout, NodeForces,
+    RapierLayoutConfig, MAX_COORDINATE,
 };
 
 use super::{edge, node, Host, FRAME};
@@ -57,6 +58,9 @@ pub enum Action {
     Throw(u32, f32, f32),
     /// Sets the weight of edge `i % edges` (if any): any value, bad ones too.
     Weigh(usize, f32),
+    /// Sets a node's forces (targets, group, lock; bad values too), or clears them when
+    /// they are the default.
+    Force(u32, NodeForces),
     /// Calls at 1/60 s until the layout rests (at most 600).
     Settle,
     Step(f32),
@@ -127,6 +131,13 @@ pub fn apply_action(host: &mut Host<u32>, action: &Action) {
             let count = host.scene.edges.len();
             if count > 0 {
                 host.scene.edges[i % count].weight = weight;
+            }
+        }
+        Action::Force(id, forces) => {
+            if forces == NodeForces::default() {
+                host.extras.forces.remove(&id);
+            } else {
+                host.extras.forces.insert(id, forces);
             }
         }
         Action::Throw(..) | Action::Settle | Action::Step(_) => {}
@@ -217,6 +228,19 @@ pub fn check(
                 n.id
             );
         } else {
+            // A locked axis does not move (beyond what the report threshold still owes).
+            let lock = host.extras.forces.get(&n.id).and_then(|f| f.lock);
+            if let (Some(axis), Some(d)) = (lock, deltas.get(&n.id)) {
+                let along = match axis {
+                    AxisLock::X => d.x,
+                    AxisLock::Y => d.y,
+                };
+                ensure!(
+                    along.abs() <= 1e-3,
+                    "node {} locked on {axis:?} moved {along} along it",
+                    n.id
+                );
+            }
             // Deltas sum to the world's positions: the host's position after applying
             // them is the body's, up to rounding and the 1e-4 report threshold.
             let scale = 1.0 + n.position.x.abs().max(n.position.y.abs());

@@ -29,6 +29,12 @@
 //! time, and adds the deltas to the node locations. Releasing a dragged node throws it
 //! with the pointer's speed. While the layout moves it asks egui for another frame.
 //!
+//! [`AnimatedState`] is implemented, so
+//! [`GraphView::fast_forward_until_stable`](egui_graphs::GraphView::fast_forward_until_stable)
+//! runs the layout ahead within one frame: at rest every delta is exactly zero, so an
+//! `epsilon` of `f32::MIN_POSITIVE` runs it until the layout rests (a larger one may stop
+//! in the cooling's tail, where nodes still creep).
+//!
 //! A `StableGraph` reuses a removed node's index for the next node added: when you
 //! remove a node and add another in the same frame, call
 //! [`RapierGraphState::forget_node`] so the new node does not take over the old body.

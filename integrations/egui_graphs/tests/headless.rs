@@ -183,3 +183,36 @@ fn a_node_let_go_mid_drag_flies_on() {
         "the layout did not rest again after the throw"
     );
 }
+
+#[test]
+fn fast_forward_until_stable_lays_the_graph_out_in_one_frame() {
+    // At rest every delta is exactly zero, so the smallest positive epsilon runs
+    // the layout until it rests (a larger one may stop in the cooling's tail).
+    let mut window = Window::new(karate());
+    let mut result = None;
+    let state = window.frame(|_| ());
+    assert!(!state.converged, "one frame does not lay karate out");
+    let graph = &mut window.graph;
+    let output = window.ctx.run_ui(RawInput::default(), |ui| {
+        result = Some(
+            GraphView::<RapierGraphState, RapierGraphLayout>::fast_forward_until_stable(
+                ui,
+                graph,
+                f32::MIN_POSITIVE,
+                2_000,
+                None,
+            ),
+        );
+        let state = get_layout_state::<RapierGraphState>(ui, None);
+        assert!(
+            state.converged,
+            "fast forward stopped after {result:?} (steps, mean displacement) short of rest"
+        );
+    });
+    output.drop_without_applying_deltas();
+    let (steps, displacement) = result.expect("the frame ran");
+    assert!(
+        steps < 2_000 && displacement == 0.0,
+        "fast forward ran {steps} steps, last mean displacement {displacement}"
+    );
+}

@@ -1,0 +1,133 @@
+//! SVG pictures of a scene for the examples: edges, disks coloured by the caller, an
+//! optional trail (a thrown node's path, dotted every 10 frames) and guides (the rings
+//! and lines the per-node forces aim at).
+
+use std::fmt::Write as _;
+
+use graph_canvas_layout::euclid::default::Point2D;
+use graph_canvas_layout::CanvasSceneInput;
+
+/// A shape drawn under the graph, in world units.
+#[derive(Clone, Copy, Debug)]
+pub enum Guide {
+    Circle(Point2D<f32>, f32),
+    VerticalLine(f32),
+    HorizontalLine(f32),
+}
+
+/// The default disk colour.
+pub const BLUE: &str = "#1f77b4";
+
+/// Colours for groups, by `key % PALETTE.len()`.
+pub const PALETTE: [&str; 6] = [
+    "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
+];
+
+/// The scene as an SVG document titled `title`; `colour` picks each node's fill.
+pub fn svg(
+    scene: &CanvasSceneInput<u32>,
+    title: &str,
+    trail: &[Point2D<f32>],
+    guides: &[Guide],
+    colour: impl Fn(u32) -> &'static str,
+) -> String {
+    let frame = 1.0 / 60.0;
+    let mut pts: Vec<Point2D<f32>> = scene.nodes.iter().map(|n| n.position).collect();
+    pts.extend(trail.iter().copied());
+    for guide in guides {
+        if let Guide::Circle(c, r) = *guide {
+            pts.push(Point2D::new(c.x - r, c.y - r));
+            pts.push(Point2D::new(c.x + r, c.y + r));
+        }
+    }
+    let (mut lo, mut hi) = (
+        Point2D::new(f32::MAX, f32::MAX),
+        Point2D::new(f32::MIN, f32::MIN),
+    );
+    for p in pts {
+        lo = lo.min(p);
+        hi = hi.max(p);
+    }
+    let pad = 40.0;
+    let (w, h) = (hi.x - lo.x + 2.0 * pad, hi.y - lo.y + 2.0 * pad);
+    let at = |p: Point2D<f32>| (p.x - lo.x + pad, p.y - lo.y + pad);
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0}" height="{h:.0}" viewBox="0 0 {w:.0} {h:.0}" font-family="sans-serif">"#
+    );
+    let _ = writeln!(
+        out,
+        r#"<rect width="100%" height="100%" fill="white"/><text x="12" y="24" font-size="16">{title}</text>"#
+    );
+    for guide in guides {
+        let style = r##"fill="none" stroke="#bbb" stroke-width="1.5" stroke-dasharray="6 4""##;
+        let _ = match *guide {
+            Guide::Circle(c, r) => {
+                let (x, y) = at(c);
+                writeln!(
+                    out,
+                    r#"<circle cx="{x:.1}" cy="{y:.1}" r="{r:.1}" {style}/>"#
+                )
+            }
+            Guide::VerticalLine(gx) => {
+                let (x, _) = at(Point2D::new(gx, 0.0));
+                writeln!(
+                    out,
+                    r#"<line x1="{x:.1}" y1="0" x2="{x:.1}" y2="{h:.0}" {style}/>"#
+                )
+            }
+            Guide::HorizontalLine(gy) => {
+                let (_, y) = at(Point2D::new(0.0, gy));
+                writeln!(
+                    out,
+                    r#"<line x1="0" y1="{y:.1}" x2="{w:.0}" y2="{y:.1}" {style}/>"#
+                )
+            }
+        };
+    }
+    let position: std::collections::HashMap<u32, Point2D<f32>> =
+        scene.nodes.iter().map(|n| (n.id, n.position)).collect();
+    for e in &scene.edges {
+        let ((x1, y1), (x2, y2)) = (at(position[&e.source]), at(position[&e.target]));
+        let _ = writeln!(
+            out,
+            r##"<line x1="{x1:.1}" y1="{y1:.1}" x2="{x2:.1}" y2="{y2:.1}" stroke="#999" stroke-width="1"/>"##
+        );
+    }
+    if trail.len() > 1 {
+        let path: Vec<String> = trail
+            .iter()
+            .map(|p| {
+                let (x, y) = at(*p);
+                format!("{x:.1},{y:.1}")
+            })
+            .collect();
+        let _ = writeln!(
+            out,
+            r##"<polyline points="{}" fill="none" stroke="#d62728" stroke-width="2"/>"##,
+            path.join(" ")
+        );
+        for (i, p) in trail.iter().enumerate().step_by(10) {
+            let (x, y) = at(*p);
+            let _ = writeln!(
+                out,
+                r##"<circle cx="{x:.1}" cy="{y:.1}" r="3" fill="#d62728"/><text x="{:.1}" y="{:.1}" font-size="10" fill="#d62728">{:.2}s</text>"##,
+                x + 4.0,
+                y - 4.0,
+                i as f32 * frame
+            );
+        }
+    }
+    for n in &scene.nodes {
+        let (x, y) = at(n.position);
+        let r = if n.radius > 0.0 { n.radius } else { 16.0 };
+        let _ = writeln!(
+            out,
+            r##"<circle cx="{x:.1}" cy="{y:.1}" r="{r}" fill="{}" fill-opacity="0.8" stroke="white"/>"##,
+            colour(n.id)
+        );
+    }
+    out.push_str("</svg>\n");
+    out
+}

@@ -1,0 +1,160 @@
+//! The host's per-node forces ([`LayoutExtras::forces`]) onto the world, once per call
+//! after sync in: the table the pulls read by slot (`forces/targets.rs`), a wake and
+//! local heat for every node whose forces changed, and the axis locks, which are rapier
+//! lock flags (the solver then treats the body as infinitely heavy along that axis)
+//! plus a guard after every substep that holds the locked coordinate at the host's,
+//! against the velocity changes the layout sets itself (disk separation, a
+//! release) and the projection at the cold stop.
+
+use std::hash::Hash;
+
+use rapier2d::prelude::{LockedAxes, Vector};
+
+use super::matching::NO_SLOT;
+use super::RapierLayout;
+use crate::forces::targets::NodeTargets;
+use crate::input::node_forces::{AxisLock, NodeForces};
+use crate::input::scene::CanvasSceneInput;
+use crate::layout::LayoutExtras;
+use crate::world::RapierSceneWorld;
+
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    /// Reads `extras.forces` for the scene's usable nodes; returns whether any node's
+    /// forces changed (a disturbance: those nodes are woken and heated).
+    pub(super) fn sync_node_forces(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+    ) -> bool {
+        let targets = &mut self.forces.targets;
+        targets.problems = 0;
+        if extras.forces.is_empty() && targets.by_slot.is_empty() {
+            return false;
+        }
+        let Some(world) = self.world.as_mut() else {
+            *targets = NodeTargets::default();
+            return false;
+        };
+        let n = world.slot_count();
+        // Last call's table becomes the spare buffer this call's is written into.
+        let before = std::mem::take(&mut targets.by_slot);
+        let mut by_slot = std::mem::take(&mut targets.spare);
+        by_slot.clear();
+        by_slot.resize(n, NodeForces::default());
+        let mut locks = Vec::new();
+        if !extras.forces.is_empty() {
+            for (node, &m) in scene.nodes.iter().zip(self.matching.matches()) {
+                if m.slot == NO_SLOT || !m.valid {
+                    continue;
+                }
+                if let Some(forces) = extras.forces.get(&node.id) {
+                    let usable = forces.usable();
+                    targets.problems += usize::from(usable != *forces);
+                    by_slot[m.slot as usize] = usable;
+                    // Held at the host's coordinate, which a body just inserted beside
+                    // another at the same point (and spread a little) may not have.
+                    let p = node.position;
+                    match usable.lock {
+                        Some(AxisLock::X) => locks.push((m.slot, AxisLock::X, p.x)),
+                        Some(AxisLock::Y) => locks.push((m.slot, AxisLock::Y, p.y)),
+                        None => {}
+                    }
+                }
+            }
+        }
+        // Unlock what is no longer locked (slots of the last call's locks), then lock.
+        for &(slot, _, _) in &targets.locks {
+            let s = slot as usize;
+            if s < n && by_slot[s].lock.is_none() {
+                set_lock(world, s, None);
+            }
+        }
+        for &(slot, axis, _) in &locks {
+            set_lock(world, slot as usize, Some(axis));
+        }
+        targets.locks = locks;
+        let mut changed = false;
+        let mut any = false;
+        for (s, now) in by_slot.iter().enumerate() {
+            let none = *now == NodeForces::default();
+            any |= !none;
+            let was = before.get(s);
+            if was.map_or(!none, |was| was != now) {
+                changed = true;
+                self.disturbances.touch(s, true);
+                let body = world.body_at_mut(s);
+                if body.is_dynamic() {
+                    body.wake_up(true);
+                }
+            }
+        }
+        targets.spare = before;
+        if any {
+            targets.by_slot = by_slot;
+        } else {
+            // Nothing left: the next call without forces skips all of this.
+            targets.spare = by_slot;
+            targets.spare.clear();
+        }
+        targets.index();
+        changed
+    }
+}
+
+/// Sets the rapier lock flags of the body in slot `s` to `lock` (rotation stays locked),
+/// and stops its motion along a newly locked axis.
+fn set_lock<N: Clone + Eq + Hash>(
+    world: &mut RapierSceneWorld<N>,
+    s: usize,
+    lock: Option<AxisLock>,
+) {
+    let mut wanted = LockedAxes::ROTATION_LOCKED;
+    match lock {
+        Some(AxisLock::X) => wanted |= LockedAxes::TRANSLATION_LOCKED_X,
+        Some(AxisLock::Y) => wanted |= LockedAxes::TRANSLATION_LOCKED_Y,
+        None => {}
+    }
+    // NOTE: read first: a mutable access marks the body as modified for rapier.
+    if world.body_at(s).locked_axes() == wanted {
+        return;
+    }
+    let body = world.body_at_mut(s);
+    body.set_locked_axes(wanted, true);
+    let mut v = body.linvel();
+    match lock {
+        Some(AxisLock::X) => v.x = 0.0,
+        Some(AxisLock::Y) => v.y = 0.0,
+        None => return,
+    }
+    body.set_linvel(v, true);
+}
+
+/// Puts every locked dynamic body back on its locked coordinate, at no speed along it.
+pub(super) fn hold_locked_axes<N: Clone + Eq + Hash>(
+    world: &mut RapierSceneWorld<N>,
+    locks: &[(u32, AxisLock, f32)],
+) {
+    for &(slot, axis, value) in locks {
+        let s = slot as usize;
+        if s >= world.slot_count() {
+            continue;
+        }
+        let body = world.body_at(s);
+        if !body.is_dynamic() {
+            continue;
+        }
+        let (mut t, mut v) = (body.translation(), body.linvel());
+        let (coordinate, speed) = match axis {
+            AxisLock::X => (&mut t.x, &mut v.x),
+            AxisLock::Y => (&mut t.y, &mut v.y),
+        };
+        if coordinate.to_bits() == value.to_bits() && *speed == 0.0 {
+            continue;
+        }
+        *coordinate = value;
+        *speed = 0.0;
+        let body = world.body_at_mut(s);
+        body.set_translation(Vector::new(t.x, t.y), false);
+        body.set_linvel(v, false);
+    }
+}

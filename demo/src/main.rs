@@ -124,26 +124,7 @@ impl Demo {
             ui.radio_value(&mut self.layout.config.accuracy, accuracy, name);
         }
         ui.label("edge joint");
-        let joints = [
-            (
-                "Spring",
-                EdgeJoint::Spring {
-                    rest_length: 100.0,
-                    stiffness: 50.0,
-                    damping: 2.0,
-                },
-            ),
-            (
-                "Rope",
-                EdgeJoint::Rope {
-                    max_length: 120.0,
-                    stiffness: 1e4,
-                },
-            ),
-            ("Distance", EdgeJoint::Distance { length: 100.0 }),
-            ("None", EdgeJoint::None),
-        ];
-        for (name, joint) in joints {
+        for (name, joint) in joint_choices(self.layout.config.edge_joint) {
             ui.radio_value(&mut self.layout.config.edge_joint, joint, name);
         }
         ui.separator();
@@ -314,6 +295,45 @@ fn preset(force_directed: bool) -> RapierLayoutConfig {
     }
 }
 
+/// The edge joint radio buttons: four joints, and the one in force when it is none of
+/// them (`force_directed()`'s own spring), so one is always selected.
+fn joint_choices(current: EdgeJoint) -> Vec<(String, EdgeJoint)> {
+    let mut choices = vec![
+        (
+            "Spring".to_string(),
+            EdgeJoint::Spring {
+                rest_length: 100.0,
+                stiffness: 50.0,
+                damping: 2.0,
+            },
+        ),
+        (
+            "Rope".to_string(),
+            EdgeJoint::Rope {
+                max_length: 120.0,
+                stiffness: 1e4,
+            },
+        ),
+        (
+            "Distance".to_string(),
+            EdgeJoint::Distance { length: 100.0 },
+        ),
+        ("None".to_string(), EdgeJoint::None),
+    ];
+    if choices.iter().all(|(_, j)| *j != current) {
+        let name = match current {
+            EdgeJoint::Spring {
+                rest_length,
+                stiffness,
+                ..
+            } => format!("Spring (in force: rest {rest_length}, stiffness {stiffness})"),
+            other => format!("{other:?}"),
+        };
+        choices.push((name, current));
+    }
+    choices
+}
+
 /// The accuracy radio buttons: the three named settings, the preset's own when it is
 /// custom (`force_directed()`'s is), and whatever else is in force, so one is always
 /// selected.
@@ -331,7 +351,13 @@ fn accuracy_choices(current: Accuracy, preset: Accuracy) -> Vec<(String, Accurac
         } = accuracy
         {
             if choices.iter().all(|(_, a)| *a != accuracy) {
-                let name = format!("{whose}: {solver_iterations} iterations × {substeps} substeps");
+                let plural =
+                    |n: usize, what: &str| format!("{n} {what}{}", if n == 1 { "" } else { "s" });
+                let name = format!(
+                    "{whose}: {} × {}",
+                    plural(solver_iterations, "iteration"),
+                    plural(substeps as usize, "substep")
+                );
                 choices.push((name, accuracy));
             }
         }
@@ -395,5 +421,17 @@ mod tests {
         let choices = accuracy_choices(own, preset(true).accuracy);
         assert_eq!(choices.len(), 5, "{choices:?}");
         assert!(choices.iter().any(|(_, a)| *a == own));
+    }
+
+    #[test]
+    fn the_joint_in_force_is_always_a_choice() {
+        for force_directed in [false, true] {
+            let joint = preset(force_directed).edge_joint;
+            let choices = joint_choices(joint);
+            assert!(
+                choices.iter().any(|(_, j)| *j == joint),
+                "{joint:?} (force_directed {force_directed}) not among {choices:?}"
+            );
+        }
     }
 }

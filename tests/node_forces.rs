@@ -9,7 +9,7 @@ use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::quality::hop_distances;
 use graph_canvas_layout::{
     AxisLock, CanvasSceneInput, CanvasViewport, Layout, LayoutError, LayoutExtras, NodeForces,
-    RapierLayoutConfig, RapierLayoutState,
+    RapierLayoutConfig, RapierLayoutState, SpringModel,
 };
 
 fn host(name: &str) -> Host<u32> {
@@ -58,11 +58,12 @@ fn a_radial_layout_puts_every_node_on_its_ring() {
         |id| NodeForces::default().on_ring(0.0, 0.0, ring(id), 50.0),
         |host, id| (host.pos(&id).to_vector().length() - ring(id)).abs(),
     );
-    // Strength 50 is 100 times a leaf's edge spring in force_directed(): what the springs
-    // and the repulsion still pull a node off by is a few units, against rings 120 apart
-    // (measured: mean 0.7, worst 2.3; at ring spacings 80-150, worst 2.0-3.4).
+    // Strength 50 is 100 times a leaf's edge spring in force_directed(): the springs and
+    // the repulsion still pull a node off by a few units, against rings 120 apart, and
+    // where a ring is crowded a disk sits up to its radius (16) off it (measured: mean
+    // 3.1, worst 16.9).
     assert!(
-        worst.1 < 5.0 && mean < 2.0,
+        worst.1 < 20.0 && mean < 5.0,
         "after {frames} frames nodes sit {mean:.2} units off their rings on average, \
          node {} {:.2} units",
         worst.0,
@@ -81,11 +82,11 @@ fn a_timeline_keeps_x_at_the_date_and_spreads_y() {
     let ys: Vec<f32> = ids(&host).iter().map(|id| host.pos(id).y).collect();
     let mean_y = ys.iter().sum::<f32>() / ys.len() as f32;
     let spread_y = (ys.iter().map(|y| (y - mean_y).powi(2)).sum::<f32>() / ys.len() as f32).sqrt();
-    // Nodes of one date share a line and their disks must not overlap on it: the worst
-    // stays under a disk's diameter (32), the mean a few units (measured: mean 3.8, worst
-    // 16.5).
+    // Nodes of one date share a line and their disks must not overlap on it: where two
+    // sit side by side each is a radius (16) off the line; the mean is a few units
+    // (measured: mean 6.0, worst 16.1).
     assert!(
-        worst.1 < 20.0 && mean < 5.0,
+        worst.1 < 20.0 && mean < 8.0,
         "after {frames} frames nodes sit {mean:.2} units off their dates on average, \
          node {} {:.2} units (dates 100 apart)",
         worst.0,
@@ -254,6 +255,21 @@ fn a_bad_force_is_named_by_try_step_and_left_out_by_step() {
     extras
         .forces
         .insert(0, NodeForces::default().on_ring(0.0, 0.0, -5.0, 0.5));
+    // A target beyond the coordinates a node may have is bad too.
+    let mut far = extras.clone();
+    far.forces
+        .insert(0, NodeForces::default().toward_x(5e9, 1.0));
+    assert!(
+        matches!(
+            try_step(&far),
+            Err(LayoutError::InvalidNodeForce {
+                node: 0,
+                part: "x",
+                ..
+            })
+        ),
+        "a target of 5e9 (beyond MAX_COORDINATE) was taken"
+    );
     let err = try_step(&extras);
     assert_eq!(state.step_count, 0, "a rejected call changed the state");
     assert!(!layout.has_world(), "a rejected call built a world");
@@ -278,4 +294,96 @@ fn a_bad_force_is_named_by_try_step_and_left_out_by_step() {
         "node 1 at {p:?}: expected y pulled to 80, x left where it was"
     );
     assert!(p.x.is_finite() && host.pos(&0).x.is_finite());
+}
+
+#[test]
+fn removing_the_last_pull_leaves_no_force_behind() {
+    // The default configuration has no force of its own: once the host's last pull is
+    // gone nothing resets the bodies' forces but the layout.
+    let scene = CanvasSceneInput::new(
+        vec![node(0_u32, 0.0, 0.0), node(1, 100.0, 0.0)],
+        vec![edge(0, 1)],
+    );
+    let mut host = Host::new(scene, RapierLayoutConfig::default());
+    host.extras.pinned.insert(0);
+    host.extras
+        .forces
+        .insert(1, NodeForces::default().toward_y(200.0, 0.5));
+    host.frames(120);
+    let pulled = host.pos(&1);
+    host.extras.forces.clear();
+    host.settle(2_000);
+    let length = dist(host.pos(&1), host.pos(&0));
+    // Back at the spring's rest length (100), hanging from the pin with no gravity, up
+    // to where a soft spring falls asleep (about 2 units); the last pull, left on, would
+    // have carried it off toward y = 1,000.
+    assert!(
+        (length - 100.0).abs() < 5.0,
+        "pulled to {pulled:?}, then let go: the edge is {length} long, not its rest length 100"
+    );
+}
+
+#[test]
+fn a_lock_dropped_as_another_node_leaves_is_gone() {
+    // Removing node 0 moves the last body (node 2) into its slot; node 2's lock, dropped
+    // in the same call, must still come off.
+    let scene = CanvasSceneInput::new(
+        vec![
+            node(0_u32, -500.0, 0.0),
+            node(1, 0.0, 0.0),
+            node(2, 60.0, 80.0),
+        ],
+        vec![edge(1, 2)],
+    );
+    let mut host = Host::new(scene, RapierLayoutConfig::default());
+    host.extras.pinned.insert(1);
+    host.extras
+        .forces
+        .insert(2, NodeForces::default().locked(AxisLock::X));
+    host.frames(10);
+    host.scene.nodes.remove(0);
+    host.extras.forces.clear();
+    host.frame(FRAME);
+    // The pin moves 200 units to the left: free again, node 2 follows it along x.
+    host.set_pos(&1, Point2D::new(-200.0, 0.0));
+    host.settle(2_000);
+    let p = host.pos(&2);
+    assert!(
+        p.x < 0.0,
+        "node 2 at {p:?} after the pin moved to x = -200: still locked at x = 60"
+    );
+}
+
+#[test]
+fn a_pull_along_x_leaves_y_as_free_as_without_it() {
+    // A node hanging below a pin on a spring (applied as forces, as force_directed()
+    // does), let go from a stretch along y: with a strong pull holding its x, it comes
+    // to rest along y as fast as without one.
+    let frames_to_rest = |pull: Option<NodeForces>| {
+        let scene = CanvasSceneInput::new(
+            vec![node(0_u32, 0.0, 0.0), node(1, 0.0, 300.0)],
+            vec![edge(0, 1)],
+        );
+        let config = RapierLayoutConfig {
+            spring_model: SpringModel::Forces,
+            ..RapierLayoutConfig::default()
+        };
+        let mut host = Host::new(scene, config);
+        host.extras.pinned.insert(0);
+        if let Some(pull) = pull {
+            host.extras.forces.insert(1, pull);
+        }
+        (1..=600)
+            .find(|_| {
+                host.frame(FRAME);
+                (host.pos(&1).y - 100.0).abs() < 5.0
+            })
+            .unwrap_or(600)
+    };
+    let free = frames_to_rest(None);
+    let held = frames_to_rest(Some(NodeForces::default().toward_x(0.0, 50.0)));
+    assert!(
+        (held as f32) < 1.25 * free as f32 + 2.0,
+        "y reached its rest in {free} frames free, in {held} with x held at strength 50"
+    );
 }

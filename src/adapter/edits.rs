@@ -29,6 +29,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let Some(topology) = self.candidate_topology(scene, extras) else {
             return false;
         };
+        // Counted here, with the edges the next call compares against (not by
+        // `topology_changed`, which may look at another scene).
+        self.matching.topology_problems = topology.problems;
         self.matching.remember_edges(scene);
         let same_edges = topology.hash == self.topology_hash;
         if self.world.is_some() && same_edges && topology.weight_hash == self.weight_hash {

@@ -172,10 +172,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             return None;
         }
         let world = self.world.as_ref();
-        let topology = Topology::of(scene, extras, |id| {
+        Some(Topology::of(scene, extras, |id| {
             world.is_some_and(|w| w.contains_node(id))
-        });
-        self.matching.topology_problems = topology.problems;
-        Some(topology)
+        }))
     }
 }

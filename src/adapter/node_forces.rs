@@ -36,12 +36,11 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             return false;
         };
         let n = world.slot_count();
-        // Last call's table becomes the spare buffer this call's is written into.
-        let before = std::mem::take(&mut targets.by_slot);
-        let mut by_slot = std::mem::take(&mut targets.spare);
+        // The last call's table is the buffer this call's is written into.
+        let mut by_slot = std::mem::take(&mut targets.by_slot);
         by_slot.clear();
         by_slot.resize(n, NodeForces::default());
-        let mut locks = Vec::new();
+        targets.locks.clear();
         if !extras.forces.is_empty() {
             for (node, &m) in scene.nodes.iter().zip(self.matching.matches()) {
                 if m.slot == NO_SLOT || !m.valid {
@@ -55,31 +54,27 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                     // another at the same point (and spread a little) may not have.
                     let p = node.position;
                     match usable.lock {
-                        Some(AxisLock::X) => locks.push((m.slot, AxisLock::X, p.x)),
-                        Some(AxisLock::Y) => locks.push((m.slot, AxisLock::Y, p.y)),
+                        Some(AxisLock::X) => targets.locks.push((m.slot, AxisLock::X, p.x)),
+                        Some(AxisLock::Y) => targets.locks.push((m.slot, AxisLock::Y, p.y)),
                         None => {}
                     }
                 }
             }
         }
-        // Unlock what is no longer locked (slots of the last call's locks), then lock.
-        for &(slot, _, _) in &targets.locks {
-            let s = slot as usize;
-            if s < n && by_slot[s].lock.is_none() {
-                set_lock(world, s, None);
-            }
-        }
-        for &(slot, axis, _) in &locks {
-            set_lock(world, slot as usize, Some(axis));
-        }
-        targets.locks = locks;
+        // What each body had is kept with its slot (which moves with it when another
+        // node is removed), so a change is told apart from the last call's by node.
         let mut changed = false;
         let mut any = false;
         for (s, now) in by_slot.iter().enumerate() {
-            let none = *now == NodeForces::default();
-            any |= !none;
-            let was = before.get(s);
-            if was.map_or(!none, |was| was != now) {
+            let key = now.key();
+            any |= key != 0;
+            let host = world.host_at_mut(s);
+            let (was_key, was_lock) = (host.forces_key, host.lock);
+            (host.forces_key, host.lock) = (key, now.lock);
+            if was_lock != now.lock {
+                set_lock(world, s, now.lock);
+            }
+            if was_key != key {
                 changed = true;
                 self.disturbances.touch(s, true);
                 let body = world.body_at_mut(s);
@@ -88,13 +83,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 }
             }
         }
-        targets.spare = before;
         if any {
             targets.by_slot = by_slot;
-        } else {
-            // Nothing left: the next call without forces skips all of this.
-            targets.spare = by_slot;
-            targets.spare.clear();
         }
         targets.index();
         changed

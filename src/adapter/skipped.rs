@@ -20,7 +20,11 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// [`LayoutExtras::forces`] (left out). Empty when the call used everything.
     ///
     /// [`is_converged`](crate::Layout::is_converged) speaks of what the call used: a
-    /// layout can be at rest while a node listed here waits for usable values.
+    /// layout can be at rest while a node listed here waits for usable values. A call
+    /// that [`try_step`](Self::try_step) rejected did not run and leaves the list as the
+    /// last call that ran left it. Each call that leaves something out works the list
+    /// out anew, an O(n + e) pass over the scene, so a host that keeps a bad element
+    /// around pays that every frame until it fixes it.
     ///
     /// # Example
     /// ```

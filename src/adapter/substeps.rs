@@ -74,6 +74,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         params.contact_softness = heat.contact_softness.coefficients();
         params.static_contact_softness = heat.contact_softness.static_coefficients();
         let forces_on = self.forces.any_active(config);
+        if !forces_on {
+            self.forces.release(world);
+        }
         for k in 0..plan.substeps {
             drive_kinematic_bodies(world, &self.drives, k, plan.substeps);
             if forces_on {

@@ -4,7 +4,9 @@
 //! moves as a whole freely) and solved implicitly with the springs like the other pulls (`targets.rs`);
 //! with a separation, each node is pushed from the centre of every other group in
 //! proportion to that group's size, a many-body force between groups, `groups²` per
-//! substep.
+//! substep. Every member counts toward its group's centre and mean velocity, pinned and
+//! dragged ones too (a group follows a dragged member); only awake dynamic members are
+//! pulled.
 
 use std::hash::Hash;
 

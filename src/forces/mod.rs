@@ -17,8 +17,10 @@
 //! body (springs do): the sum on a body of mass `m` is then divided by
 //! `1 + (dt² k + dt c) / m`, an implicit Euler step on the body's own stiffness `k` and
 //! damping `c` (the diagonal of the springs' Jacobian), so springs stiffer than the step
-//! resolves stay stable and the body still comes to rest where its forces balance. A new
-//! force is one file here and one line in [`Forces::default`].
+//! resolves stay stable and the body still comes to rest where its forces balance. The
+//! host's pulls act along one direction each and report their stiffness as a matrix
+//! (`targets.rs`), so the step slows a body only along the pull. A new force is one file
+//! here and one line in [`Forces::default`].
 
 use std::hash::Hash;
 
@@ -146,6 +148,23 @@ pub(crate) struct ForceSums {
     /// `dt² k + dt c` of each body's springs applied as forces: what the implicit step
     /// divides by (with the mass).
     pub(crate) resistance: Vec<f32>,
+    /// The same of the host's pulls, which act along one direction `u` each: the sum of
+    /// `(dt² k + dt c) u uᵀ` as `[xx, xy, yy]`, so that a pull along x leaves motion
+    /// along y as free as without it.
+    pub(crate) pulls: Vec<[f32; 3]>,
+}
+
+/// `m (M)⁻¹ f` with `M = (m + resistance) I + [[xx, xy], [xy, yy]]`: the implicit step
+/// on a body's isotropic springs and its directed pulls at once.
+fn implicit_with_pulls(
+    f: Vector2D<f32>,
+    m: f32,
+    resistance: f32,
+    [xx, xy, yy]: [f32; 3],
+) -> Vector2D<f32> {
+    let (a, c) = (m + resistance + xx, m + resistance + yy);
+    let det = a * c - xy * xy;
+    Vector2D::new(c * f.x - xy * f.y, a * f.y - xy * f.x) * (m / det)
 }
 
 /// One force on bodies, applied every substep.
@@ -169,6 +188,9 @@ pub(crate) struct Forces<N> {
     collide: collide::Collide,
     /// The host's per-node forces for this call (`adapter/node_forces.rs` fills it).
     pub(crate) targets: NodeTargets,
+    /// Whether the last substep set forces on bodies: rapier keeps a body's force until
+    /// it is reset, so when no force is active any more they are cleared once.
+    applied: bool,
 }
 
 impl<N: Clone + Eq + Hash> Default for Forces<N> {
@@ -189,6 +211,7 @@ impl<N: Clone + Eq + Hash> Default for Forces<N> {
             sums: ForceSums::default(),
             collide: collide::Collide::default(),
             targets: NodeTargets::default(),
+            applied: false,
         }
     }
 }
@@ -212,9 +235,25 @@ impl<N: Clone + Eq + Hash> Forces<N> {
                 .any(|force| force.is_active(config, &self.targets))
     }
 
+    /// Clears the forces the last substeps left on bodies, once, after the last active
+    /// force went away (a host's last pull removed, a configuration without forces):
+    /// without it a body would keep being pushed by a force nobody applies.
+    pub(crate) fn release(&mut self, world: &mut RapierSceneWorld<N>) {
+        if !std::mem::take(&mut self.applied) {
+            return;
+        }
+        for s in 0..world.slot_count() {
+            // NOTE: read first: a mutable access marks the body as modified for rapier.
+            if world.body_at(s).user_force() != Vector::ZERO {
+                world.body_at_mut(s).reset_forces(false);
+            }
+        }
+    }
+
     /// Forgets every force's cache (the world was dropped or built anew).
     pub(crate) fn reset(&mut self) {
         self.targets = NodeTargets::default();
+        self.applied = false;
         for force in &mut self.list {
             force.reset();
         }
@@ -235,6 +274,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         if !world.may_move() {
             return;
         }
+        self.applied = true;
         let heat = law.alpha;
         let n = world.slot_count();
         self.bodies.gather(world);
@@ -244,6 +284,8 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         self.sums.springs.resize(n, Vector2D::zero());
         self.sums.resistance.clear();
         self.sums.resistance.resize(n, 0.0);
+        self.sums.pulls.clear();
+        self.sums.pulls.resize(n, [0.0; 3]);
         let frame = ForceContext {
             world,
             config,
@@ -264,16 +306,20 @@ impl<N: Clone + Eq + Hash> Forces<N> {
                 continue;
             }
             let mut resistance = self.sums.resistance[s];
+            let mut pulls = self.sums.pulls[s];
             match law.boosts(world.host_at(s).heat) {
                 None => *f += self.sums.springs[s],
                 Some((springs, others)) => {
                     // Heated by a local disturbance.
                     *f = *f * others + self.sums.springs[s] * springs;
                     resistance *= springs;
+                    pulls = pulls.map(|r| r * springs);
                 }
             }
-            if resistance > 0.0 {
-                let mass = world.mass_at(s);
+            let mass = world.mass_at(s);
+            if pulls.iter().any(|r| *r != 0.0) {
+                *f = implicit_with_pulls(*f, mass, resistance, pulls);
+            } else if resistance > 0.0 {
                 *f *= mass / (mass + resistance);
             }
             if !f.is_finite() {

@@ -23,8 +23,6 @@ pub(crate) struct NodeTargets {
     /// Every slot's forces (all `None` for a node without an entry); empty while no
     /// node has any.
     pub(crate) by_slot: Vec<NodeForces>,
-    /// The last call's table, kept as the buffer the next call's is written into.
-    pub(crate) spare: Vec<NodeForces>,
     /// Slots with a pull toward an x, a y or a ring, in slot order.
     pub(crate) pulled: Vec<u32>,
     /// Groups by ascending key.
@@ -79,11 +77,14 @@ pub(crate) fn pulled_bodies<'a, N: Clone + Eq + std::hash::Hash>(
     })
 }
 
-/// Adds to `out` the pull on the body in slot `s` of stiffness `k` and damping `c` per
-/// axis, stretched by `stretch` and moving away at `speed` along the unit vector `axis`:
-/// `(k stretch - c speed) axis`, with `dt² k + dt c` for the implicit step that
-/// `Forces::apply` takes on each body's stiffness, so any stiffness is stable and the
-/// body still rests where its forces balance.
+/// Adds to `out` the pull on the body in slot `s` of stiffness `k` and damping `c`,
+/// stretched by `stretch` and moving away at `speed` along the unit vector `axis`, as one
+/// backward Euler step: the force `(k stretch - (c + dt k) speed) axis`, and
+/// `(dt² k + dt c) axis axisᵀ` for the implicit division `Forces::apply` takes, which
+/// together give `(m + dt c + dt² k) Δv = dt (k stretch - (c + dt k) speed)`: stable and
+/// damped at any stiffness (far stiffer than the step resolves, where the edge springs
+/// are capped), resting where the forces balance, and leaving motion across `axis` as
+/// free as without the pull.
 pub(crate) fn add_pull(
     out: &mut ForceSums,
     s: usize,
@@ -93,10 +94,14 @@ pub(crate) fn add_pull(
     stretch: f32,
     speed: f32,
 ) {
-    let f = axis * (k * stretch - c * speed);
-    if f.is_finite() {
+    let f = axis * (k * stretch - (c + dt * k) * speed);
+    let r = dt * dt * k + dt * c;
+    if f.is_finite() && r.is_finite() {
         out.springs[s] += f;
-        out.resistance[s] += dt * dt * k + dt * c;
+        let pulls = &mut out.pulls[s];
+        pulls[0] += r * axis.x * axis.x;
+        pulls[1] += r * axis.x * axis.y;
+        pulls[2] += r * axis.y * axis.y;
     }
 }
 

@@ -8,10 +8,13 @@
 use euclid::default::Point2D;
 use serde::{Deserialize, Serialize};
 
+use crate::input::validation::MAX_COORDINATE;
+
 /// A pull toward one coordinate, d3-force's `forceX` or `forceY` for one node.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct AxisTarget {
-    /// The coordinate the node is pulled toward, in world units.
+    /// The coordinate the node is pulled toward, in world units, within
+    /// ±[`MAX_COORDINATE`](crate::MAX_COORDINATE).
     pub value: f32,
     /// d3-force's strength: the share of the distance to the target the pull closes per
     /// 1/60 s with nothing else acting (d3's default is 0.1). The force on a node of mass
@@ -20,8 +23,9 @@ pub struct AxisTarget {
     /// so any strength is stable and the node rests where its forces balance. The edge
     /// springs of [`force_directed`](crate::RapierLayoutConfig::force_directed) have
     /// strength 0.5 at a leaf: 0.1 to 1 is a bias they can overrule, 20 or more holds
-    /// nodes within a few units of their targets (a radial karate at 50: 0.7 units off
-    /// on average), and higher strengths also move a node to a changed target faster.
+    /// nodes within a few units of their targets (a radial karate at 50: 3.1 units off
+    /// on average; where targets crowd, disks sit up to a radius off them), and higher
+    /// strengths also move a node to a changed target faster.
     /// Must be finite and `>= 0`.
     pub strength: f32,
 }
@@ -29,9 +33,9 @@ pub struct AxisTarget {
 /// A pull toward a circle, d3-force's `forceRadial` for one node.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RingTarget {
-    /// The circle's centre, in world units.
+    /// The circle's centre, in world units, within ±[`MAX_COORDINATE`](crate::MAX_COORDINATE).
     pub center: Point2D<f32>,
-    /// The circle's radius, in world units. Must be finite and `>= 0`.
+    /// The circle's radius, in world units, from 0 to [`MAX_COORDINATE`](crate::MAX_COORDINATE).
     pub radius: f32,
     /// As [`AxisTarget::strength`], along the line from the centre through the node. A
     /// node exactly at the centre feels nothing until something moves it off.
@@ -53,8 +57,10 @@ pub enum AxisLock {
 ///
 /// Changing an entry moves the node smoothly (the forces pull it over the next frames)
 /// and wakes it and, under a [`Cooling`](crate::Cooling) schedule, heats its
-/// neighbourhood; no rebuild. Bad values (a non-finite target, a negative strength or
-/// radius) are [`LayoutError::InvalidNodeForce`](crate::LayoutError::InvalidNodeForce)
+/// neighbourhood; no rebuild. Group members are not linked for rapier's sleep: a group
+/// mate asleep far from a moved member (in hops) stays asleep until something near it
+/// wakes it. Bad values (a target beyond ±[`MAX_COORDINATE`](crate::MAX_COORDINATE) or
+/// not finite, a negative strength or radius) are [`LayoutError::InvalidNodeForce`](crate::LayoutError::InvalidNodeForce)
 /// for [`RapierLayout::try_step`](crate::RapierLayout::try_step);
 /// [`step`](crate::Layout::step) leaves that part out and keeps the rest.
 ///
@@ -126,32 +132,26 @@ impl NodeForces {
     }
 
     /// The first bad value, as the part it belongs to and the value: `"x"`, `"y"`,
-    /// `"ring"` (its centre or radius) or the strength of one of them.
+    /// `"ring centre"` or `"ring radius"` (beyond ±[`MAX_COORDINATE`] or not finite), or
+    /// the strength of one of them (negative or not finite).
     pub(crate) fn problem(&self) -> Option<(&'static str, f32)> {
-        for (name, target) in [("x", self.x), ("y", self.y)] {
+        for (name, strength, target) in [("x", "x strength", self.x), ("y", "y strength", self.y)] {
             if let Some(t) = target {
-                if !t.value.is_finite() {
+                if !coordinate_ok(t.value) {
                     return Some((name, t.value));
                 }
                 if !strength_ok(t.strength) {
-                    return Some((
-                        if name == "x" {
-                            "x strength"
-                        } else {
-                            "y strength"
-                        },
-                        t.strength,
-                    ));
+                    return Some((strength, t.strength));
                 }
             }
         }
         if let Some(ring) = self.ring {
             for v in [ring.center.x, ring.center.y] {
-                if !v.is_finite() {
+                if !coordinate_ok(v) {
                     return Some(("ring centre", v));
                 }
             }
-            if !(ring.radius.is_finite() && ring.radius >= 0.0) {
+            if !(coordinate_ok(ring.radius) && ring.radius >= 0.0) {
                 return Some(("ring radius", ring.radius));
             }
             if !strength_ok(ring.strength) {
@@ -163,18 +163,53 @@ impl NodeForces {
 
     /// What the layout applies of these: the parts with bad values left out.
     pub(crate) fn usable(mut self) -> Self {
-        let axis_ok = |t: &AxisTarget| t.value.is_finite() && strength_ok(t.strength);
+        let axis_ok = |t: &AxisTarget| coordinate_ok(t.value) && strength_ok(t.strength);
         self.x = self.x.filter(axis_ok);
         self.y = self.y.filter(axis_ok);
         self.ring = self.ring.filter(|r| {
-            r.center.x.is_finite()
-                && r.center.y.is_finite()
-                && r.radius.is_finite()
+            coordinate_ok(r.center.x)
+                && coordinate_ok(r.center.y)
+                && coordinate_ok(r.radius)
                 && r.radius >= 0.0
                 && strength_ok(r.strength)
         });
         self
     }
+
+    /// A hash of every value (0 for no forces at all), to tell a change from the last
+    /// call's forces.
+    pub(crate) fn key(&self) -> u64 {
+        if *self == Self::default() {
+            return 0;
+        }
+        let mut words: [u32; 13] = [0; 13];
+        if let Some(x) = self.x {
+            (words[0], words[1], words[2]) = (1, x.value.to_bits(), x.strength.to_bits());
+        }
+        if let Some(y) = self.y {
+            (words[3], words[4], words[5]) = (1, y.value.to_bits(), y.strength.to_bits());
+        }
+        if let Some(r) = self.ring {
+            words[6] = 1;
+            (words[7], words[8]) = (r.center.x.to_bits(), r.center.y.to_bits());
+            (words[9], words[10]) = (r.radius.to_bits(), r.strength.to_bits());
+        }
+        words[11] = self.group.map_or(0, |g| g.wrapping_add(1));
+        words[12] = match self.lock {
+            None => 0,
+            Some(AxisLock::X) => 1,
+            Some(AxisLock::Y) => 2,
+        };
+        // FNV-1a over the words; 0 is kept for "none".
+        let hash = words.iter().fold(0xcbf2_9ce4_8422_2325_u64, |h, w| {
+            (h ^ u64::from(*w)).wrapping_mul(0x0000_0100_0000_01b3)
+        });
+        hash.max(1)
+    }
+}
+
+fn coordinate_ok(v: f32) -> bool {
+    v.abs() <= MAX_COORDINATE
 }
 
 fn strength_ok(strength: f32) -> bool {

@@ -10,6 +10,7 @@ use rapier2d::prelude::{ColliderHandle, ImpulseJointHandle, RigidBodyHandle};
 
 use super::RapierSceneWorld;
 use crate::config::EdgeJoint;
+use crate::input::node_forces::AxisLock;
 use crate::world::bindings::ColliderSpec;
 
 /// One node's body and the bookkeeping kept for it.
@@ -55,6 +56,11 @@ pub(crate) struct HostSync {
     /// ([`Cooling::reheat_hops`](crate::Cooling::reheat_hops)), or 0 while it has the
     /// layout's.
     pub(crate) heat: f32,
+    /// The node's per-node forces as the last call applied them
+    /// (a hash of its values), 0 for none: a change wakes the node.
+    pub(crate) forces_key: u64,
+    /// The axis the body's rapier flags lock, as the last call set them.
+    pub(crate) lock: Option<AxisLock>,
 }
 
 impl HostSync {
@@ -71,6 +77,8 @@ impl HostSync {
             fresh: true,
             synced: false,
             heat: 0.0,
+            forces_key: 0,
+            lock: None,
         }
     }
 }

@@ -24,7 +24,8 @@ impl Grid {
     ///
     /// The cells are as wide as the largest disk plus twice the usual motion (the
     /// largest, up to a disk's width), so two bodies that may touch are in the same or
-    /// neighbouring cells; a body moving further searches every cell along its path.
+    /// neighbouring cells; a body moving further searches every cell along its path (in
+    /// one pass over the bodies when the path crosses more rows than there are bodies).
     pub(super) fn pairs(
         &mut self,
         points: &[Point2D<f32>],
@@ -77,7 +78,27 @@ impl Grid {
             }
             let (from, to) = (p, p + m);
             let (lo, hi) = (from.min(to), from.max(to));
-            for y in index(lo.y - reach)..=index(hi.y + reach) {
+            let (top, bottom) = (index(lo.y - reach), index(hi.y + reach));
+            let (left, right) = (index(lo.x - reach), index(hi.x + reach));
+            if (bottom - top) as usize >= cells.len() {
+                // A path across more rows than there are bodies (a drag across the
+                // canvas): one pass over the bodies finds the same cells, in the same
+                // (row by row) order, as a search of every row.
+                for &(k, b) in cells {
+                    let (row, column) = (
+                        (k >> 32) as i64 - (1 << 31),
+                        (k & 0xffff_ffff) as i64 - (1 << 31),
+                    );
+                    if (top..=bottom).contains(&row)
+                        && (left..=right).contains(&column)
+                        && b as usize != a
+                    {
+                        pair(a as u32, b);
+                    }
+                }
+                continue;
+            }
+            for y in top..=bottom {
                 let (start, end) = (key(index(lo.x - reach), y), key(index(hi.x + reach), y));
                 let first = cells.partition_point(|&(k, _)| k < start);
                 for &(k2, b) in &cells[first..] {

@@ -7,7 +7,7 @@ use std::hash::Hash;
 
 use euclid::default::Vector2D;
 
-use super::drag::drive_kinematic_bodies;
+use super::drag::{drive_kinematic_bodies, finish_drives};
 use super::node_forces::hold_locked_axes;
 use super::state::RapierLayoutState;
 use super::RapierLayout;
@@ -94,6 +94,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 hold_locked_axes(world, &self.forces.targets.locks);
             }
         }
+        finish_drives(world, &self.drives);
     }
 
     /// Takes the nodes rapier quarantined during this call's steps.

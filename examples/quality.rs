@@ -32,8 +32,9 @@ use graph_canvas_layout::{
     RapierLayoutConfig, RapierLayoutState, SceneFile, SceneFileNode,
 };
 
-#[path = "../benches/common/generate.rs"]
-mod generate;
+mod common;
+
+use common::load;
 
 const SCENES: [&str; 6] = [
     "karate",
@@ -169,18 +170,6 @@ fn jittered(mut scene: CanvasSceneInput<u32>, start: u64) -> CanvasSceneInput<u3
         node.position.y += next();
     }
     scene
-}
-
-/// A shipped scene, or a generated one (`ba_n10000_m2`, `random_n100000_e250000`).
-fn load(name: &str) -> CanvasSceneInput<u32> {
-    if let Some(scene) = generate::by_name(name) {
-        return scene;
-    }
-    let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    serde_json::from_str::<SceneFile>(&text)
-        .unwrap_or_else(|e| panic!("{path}: {e}"))
-        .into_scene()
 }
 
 /// Writes `scene` to `target/scenes/<name>.json` in the scene file format, for the d3

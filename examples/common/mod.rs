@@ -10,8 +10,15 @@ use graph_canvas_layout::{
     RapierLayoutConfig, RapierLayoutState, SceneFile,
 };
 
-/// Loads `scenes/<name>.json`.
+#[path = "../../benches/common/generate.rs"]
+pub mod generate;
+
+/// Loads `scenes/<name>.json`, or generates the scene a generator's name stands for
+/// (`ba_n10000_m2`, `random_n100000_e250000`: `generate::by_name`).
 pub fn load(name: &str) -> CanvasSceneInput<u32> {
+    if let Some(scene) = generate::by_name(name) {
+        return scene;
+    }
     let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     serde_json::from_str::<SceneFile>(&text)

@@ -47,33 +47,20 @@ pub(super) fn drive_kinematic_bodies<N: Clone + Eq + Hash>(
     }
 }
 
-/// Puts each driven kinematic body where the host put it, if the call's steps left it
-/// short. A body keeps the "moving fast" flag rapier's continuous collision detection
-/// gave it while it was dynamic, and rapier's CCD pass then clamps the kinematic body's
-/// motion; the check before each step (`world/stepping.rs`) turns CCD off for the
-/// awake bodies it sees, but a long random session still left a dragged node with the
-/// flag 0.75 of a frame's move behind the pointer (its group had pulled it fast before
-/// the drag). The host's position is the contract: the call ends with the body on it.
-pub(super) fn finish_drives<N: Clone + Eq + Hash>(
-    world: &mut RapierSceneWorld<N>,
+/// Whether a driven kinematic body still carries the "moving fast" flag rapier's
+/// continuous collision detection gave it while it was dynamic: rapier's CCD pass would
+/// then clamp its commanded motion (a dragged node 0.75 of a frame's move behind the
+/// pointer, found in a long random session with group forces), and the world's own
+/// check over the awake bodies missed it there; the drives are every body this can
+/// happen to.
+pub(super) fn stale_ccd_in<N: Clone + Eq + Hash>(
+    world: &RapierSceneWorld<N>,
     drives: &[Drive],
-) {
-    for drive in drives {
-        let s = drive.slot as usize;
-        // NOTE: read first: a mutable access marks the body as modified for rapier.
-        let body = world.body_at(s);
-        let at = body.translation();
-        let arrived =
-            at.x.to_bits() == drive.to.x.to_bits() && at.y.to_bits() == drive.to.y.to_bits();
-        if !body.is_kinematic() || arrived {
-            continue;
-        }
-        if drive.to.is_finite() {
-            world
-                .body_at_mut(s)
-                .set_translation(Vector::new(drive.to.x, drive.to.y), false);
-        }
-    }
+) -> bool {
+    drives.iter().any(|drive| {
+        let body = world.body_at(drive.slot as usize);
+        body.is_kinematic() && body.is_ccd_active()
+    })
 }
 
 /// Records this call's host position of a dragged node and the pointer's velocity over

@@ -7,7 +7,7 @@ use std::hash::Hash;
 
 use euclid::default::Vector2D;
 
-use super::drag::{drive_kinematic_bodies, finish_drives};
+use super::drag::{drive_kinematic_bodies, stale_ccd_in};
 use super::node_forces::hold_locked_axes;
 use super::state::RapierLayoutState;
 use super::RapierLayout;
@@ -88,13 +88,15 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 self.forces
                     .apply(world, config, law, heat.contact_softness, plan.substep_dt);
             }
+            if stale_ccd_in(world, &self.drives) {
+                world.skip_ccd_next_step();
+            }
             world.step(gravity);
             self.forces.settle(world, plan.substep_dt);
             if !self.forces.targets.locks.is_empty() {
                 hold_locked_axes(world, &self.forces.targets.locks);
             }
         }
-        finish_drives(world, &self.drives);
     }
 
     /// Takes the nodes rapier quarantined during this call's steps.

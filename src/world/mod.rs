@@ -147,6 +147,8 @@ pub struct RapierSceneWorld<N> {
     spring_forces: bool,
     /// A body was inserted or accessed to change since the last step.
     touched: bool,
+    /// The next step runs without CCD (see [`RapierSceneWorld::step`]).
+    ccd_off_once: bool,
     /// Whether colliders take part in the simulation (see
     /// [`set_contacts_enabled`](RapierSceneWorld::set_contacts_enabled)).
     contacts_enabled: bool,
@@ -227,6 +229,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             contacts_enabled: true,
             spring_forces: false,
             touched: false,
+            ccd_off_once: false,
         }
     }
 

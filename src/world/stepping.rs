@@ -37,6 +37,14 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         &mut self.params
     }
 
+    /// Runs the next step without continuous collision detection: a caller that drives
+    /// kinematic bodies knows them even when the check over the awake bodies in
+    /// [`step`](Self::step) misses one (a long random session left a dragged body with
+    /// the flag).
+    pub(crate) fn skip_ccd_next_step(&mut self) {
+        self.ccd_off_once = true;
+    }
+
     /// Advances the world by one timestep under `gravity` (world units per second²;
     /// non-finite components count as zero). Contacts are recorded for
     /// [`read_events`](Self::read_events) when the world reports events; bodies whose
@@ -67,7 +75,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
                 .is_some_and(|body| !body.is_dynamic() && body.is_ccd_active())
         });
         let mut params = self.params;
-        if stale_ccd {
+        if stale_ccd || std::mem::take(&mut self.ccd_off_once) {
             params.max_ccd_substeps = 0;
         }
         self.pipeline.step(

@@ -235,6 +235,7 @@ fn insert_joints<N: Clone + Eq + Hash>(
     config: &RapierLayoutConfig,
     ends: &mut Vec<N>,
 ) {
+    world.reserve_joints(topology.edges.len().saturating_sub(world.joint_count()));
     for (&(a, b), &weight) in topology.edges.iter().zip(&topology.weights) {
         let (ia, ib) = (&scene.nodes[a].id, &scene.nodes[b].id);
         let kind = edge_joint_for(config, degrees[a], degrees[b], weight);

@@ -29,6 +29,13 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         self.insert_weighted_edge_joint(a, b, kind, 1.0)
     }
 
+    /// Makes room for `additional` more joints, so a graph's first build does not grow
+    /// the joint table step by step.
+    pub(crate) fn reserve_joints(&mut self, additional: usize) {
+        self.joints.reserve(additional);
+        self.joint_index.reserve(additional);
+    }
+
     /// [`insert_edge_joint`](Self::insert_edge_joint) for an edge of weight `weight`
     /// (`kind` is already weighted; the weight is kept to tell a later weight edit).
     pub(crate) fn insert_weighted_edge_joint(
@@ -46,17 +53,17 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         }
         let (sa, sb) = (&self.slots[ia as usize], &self.slots[ib as usize]);
         let key = joint_key(sa.serial, sb.serial);
-        if self.joint_index.contains_key(&key) {
-            return false;
-        }
         let (body_a, body_b) = (sa.body, sb.body);
         let Some(joint) = self.joint_data(ia, ib, kind, self.spring_scale.applied) else {
             return false;
         };
-        let handle = self
-            .in_rapier(kind)
-            .then(|| self.impulse_joints.insert(body_a, body_b, joint, true));
-        self.joint_index.insert(key, self.joints.len() as u32);
+        let in_rapier = self.in_rapier(kind);
+        // One probe of the table for both the check and the insert.
+        let std::collections::hash_map::Entry::Vacant(entry) = self.joint_index.entry(key) else {
+            return false;
+        };
+        entry.insert(self.joints.len() as u32);
+        let handle = in_rapier.then(|| self.impulse_joints.insert(body_a, body_b, joint, true));
         self.joints.push(JointSlot {
             key,
             handle,

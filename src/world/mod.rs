@@ -44,7 +44,7 @@ mod stepping;
 
 use events::{CollisionCollector, SceneEvent};
 use slot::{JointSlot, NodeSlot};
-use spring_scale::SpringScale;
+use spring_scale::{SpringScale, StretchCache};
 
 /// Displacements shorter than this are left out of [`RapierSceneWorld::read_positions`].
 pub const POSITION_EPSILON: f32 = 1.0e-4;
@@ -136,6 +136,8 @@ pub struct RapierSceneWorld<N> {
     topology_hash: u64,
     /// The factor on every spring's stiffness and damping, and what chose it.
     spring_scale: SpringScale,
+    /// The springs' slots and rest lengths, for their median stretch.
+    stretch: StretchCache,
     /// The timestep joints are tuned for: the last [`set_timestep`](Self::set_timestep),
     /// not the substep a call happens to run (a short frame must not stiffen springs
     /// re-tuned during it).
@@ -224,6 +226,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             recovered: Vec::new(),
             topology_hash: 0,
             spring_scale: SpringScale::default(),
+            stretch: StretchCache::default(),
             joint_dt: IntegrationParameters::default().dt,
             version: 0,
             contacts_enabled: true,

@@ -2,14 +2,16 @@
 //! the tree: [`ManyBody::forces`] and the interaction lists it sums. The tree itself is
 //! built in `mod.rs`.
 
+use std::ops::Range;
+
 use euclid::default::{Point2D, Vector2D};
 
 use super::{ManyBody, Query, NONE};
 
 /// Most points that share one walk in [`ManyBody::forces`]: larger groups walk the tree
-/// less often but sum longer lists. 16 was the fastest of 2 to 64 on `n1000_e2500` and
-/// `n10000_e25000`.
-const GROUP_SIZE: usize = 16;
+/// less often but sum longer lists. 64 was the fastest of 8 to 256 on `n10000_e25000`
+/// and the 100,000-node generated graph (2.5 and 29 ms a pass, against 3.2 and 42 at 16).
+const GROUP_SIZE: usize = 64;
 /// Independent partial sums per force, so the sum runs in vector registers.
 const LANES: usize = 8;
 
@@ -18,17 +20,17 @@ impl ManyBody {
     /// `wanted(i)` holds, written to `out[i]` (`out` is resized to the number of
     /// points; other entries are zero).
     ///
-    /// Points are taken in groups of at most 16 that share a small cell of the tree.
-    /// One walk per group collects the far cells every member may take whole, judged by
-    /// the distance from the cell's centre of charge to the *group's* bounding box, and
-    /// the points near enough to sum exactly; then each member sums that list in a
-    /// vectorised loop. A cell is taken whole only where [`force_on`](Self::force_on)
-    /// would take it whole for every member; the group's own cell, the cells holding it
-    /// and leaves never are. So the pass opens at least the cells `force_on` opens and
-    /// its mean error is no larger (on `n1000_e2500` at theta 0.9, 0.72 % against
-    /// 1.10 %; single points can land either side), theta 0 is still the exact sum,
-    /// and the pass is about a third cheaper than a walk per point on `n10000_e25000`
-    /// (3.0 against 4.5 ms at theta 0.9).
+    /// Points are taken in groups of at most 64 that share a cell of the tree (a run of
+    /// the tree's order). One walk per group collects the far cells every member may
+    /// take whole, judged by the distance from the cell's centre of charge to the
+    /// *group's* bounding box, and the points near enough to sum exactly; then each
+    /// member sums that list in a vectorised loop. A cell is taken whole only where
+    /// [`force_on`](Self::force_on) would take it whole for every member; the cells
+    /// holding a member and leaves never are. So the pass opens at least the cells
+    /// `force_on` opens and its mean error is no larger (on `n10000_e25000` at theta 0.9,
+    /// 0.59 % against 0.83 %; single points can land either side), theta 0 is still the
+    /// exact sum, and the pass costs 2.3 ms on `n10000_e25000` at theta 0.9 against
+    /// 4.5 ms for a walk per point.
     ///
     /// # Example
     /// ```
@@ -61,6 +63,7 @@ impl ManyBody {
         let mut lists = std::mem::take(&mut self.lists);
         let mut stack = std::mem::take(&mut self.stack);
         // The groups: the largest cells holding at most GROUP_SIZE points, depth first.
+
         stack.clear();
         stack.push(0);
         while let Some(g) = stack.pop() {
@@ -69,11 +72,15 @@ impl ManyBody {
                 stack.extend(self.occupied_children(node.children).rev());
                 continue;
             }
-            lists.collect_members(self, g, &wanted);
-            if lists.members.iter().any(|m| m.wanted) {
-                lists.collect_interactions(self, g, &query);
-                for m in lists.members.iter().filter(|m| m.wanted) {
-                    out[m.index as usize] = lists.sum(self.points[m.index as usize], &query);
+            let members = node.points();
+            if !members.clone().any(|k| wanted(self.index[k] as usize)) {
+                continue;
+            }
+            lists.collect_interactions(self, members.clone(), &query);
+            for k in members {
+                let i = self.index[k] as usize;
+                if wanted(i) {
+                    out[i] = lists.sum(self.sorted[k], &query);
                 }
             }
         }
@@ -82,103 +89,59 @@ impl ManyBody {
     }
 }
 
-/// A member of the group being summed.
-#[derive(Clone, Copy, Debug)]
-struct Member {
-    index: u32,
-    wanted: bool,
-}
-
 /// The interaction lists of one group, reused from group to group.
 #[derive(Clone, Debug, Default)]
 pub(super) struct GroupLists {
-    members: Vec<Member>,
     /// Far cells taken whole and points summed exactly (the members among them),
     /// as centres and charges (1 for a point).
     x: Vec<f32>,
     y: Vec<f32>,
     charge: Vec<f32>,
-    /// The group's bounding box.
-    lo: Point2D<f32>,
-    hi: Point2D<f32>,
-    /// The cells from the root down to the group's parent: they hold the group.
-    holders: Vec<u32>,
+    /// Each entry's term in the force on the member being summed.
+    terms_x: Vec<f32>,
+    terms_y: Vec<f32>,
     stack: Vec<u32>,
 }
 
 impl GroupLists {
-    /// The points under cell `g`, and their bounding box.
-    fn collect_members(&mut self, tree: &ManyBody, g: u32, wanted: &impl Fn(usize) -> bool) {
-        self.members.clear();
-        self.lo = Point2D::new(f32::MAX, f32::MAX);
-        self.hi = Point2D::new(f32::MIN, f32::MIN);
-        self.stack.clear();
-        self.stack.push(g);
-        while let Some(c) = self.stack.pop() {
-            let node = tree.nodes[c as usize];
-            if node.children != NONE {
-                self.stack.extend(node.children..node.children + 4);
-                continue;
-            }
-            for b in tree.chain(node.body) {
-                let p = tree.points[b as usize];
-                self.lo = self.lo.min(p);
-                self.hi = self.hi.max(p);
-                self.members.push(Member {
-                    index: b,
-                    wanted: wanted(b as usize),
-                });
-            }
+    /// One walk for the group of points `members` (positions in the tree order): each
+    /// cell far from the group's bounding box goes to the list whole, and the points of
+    /// every leaf opened one by one (the members' own among them).
+    fn collect_interactions(&mut self, tree: &ManyBody, members: Range<usize>, query: &Query) {
+        let (mut lo, mut hi) = (tree.sorted[members.start], tree.sorted[members.start]);
+        for &p in &tree.sorted[members.clone()] {
+            lo = lo.min(p);
+            hi = hi.max(p);
         }
-        // The path any member took when it was inserted, found the same way.
-        self.holders.clear();
-        if let Some(first) = self.members.first() {
-            let probe = tree.points[first.index as usize];
-            let mut c = 0;
-            while c != g && tree.cells[c as usize].children != NONE {
-                self.holders.push(c);
-                let cell = tree.cells[c as usize];
-                c = cell.children + cell.quadrant(probe);
-            }
-        }
-    }
-
-    /// One walk for the whole group `g`: each cell far from the group's bounding box
-    /// goes to the list whole, and the points of every leaf opened and of the group
-    /// itself one by one.
-    fn collect_interactions(&mut self, tree: &ManyBody, g: u32, query: &Query) {
+        let (first, end) = (members.start as u32, members.end as u32);
         self.x.clear();
         self.y.clear();
         self.charge.clear();
         self.stack.clear();
         self.stack.push(0);
         while let Some(c) = self.stack.pop() {
-            if c == g {
-                // The members themselves, exactly.
-                for i in 0..self.members.len() {
-                    self.push(tree.points[self.members[i].index as usize], 1.0);
+            let node = tree.nodes[c as usize];
+            if node.children == NONE {
+                for &p in &tree.sorted[node.points()] {
+                    self.push(p, 1.0);
                 }
                 continue;
             }
-            let node = tree.nodes[c as usize];
-            // A cell holding the group is always opened (taking it whole would count
-            // the members' own charge), and a leaf is summed point by point, as
-            // `force_on` does.
-            if node.children != NONE && !self.holders.contains(&c) {
-                let dx = (self.lo.x - node.mx).max(node.mx - self.hi.x).max(0.0);
-                let dy = (self.lo.y - node.my).max(node.my - self.hi.y).max(0.0);
+            // A cell holding a member is always opened: taking it whole would count the
+            // member's own charge.
+            let holds = node.first < end && first < node.first + node.charge as u32;
+            if !holds {
+                let dx = (lo.x - node.mx).max(node.mx - hi.x).max(0.0);
+                let dy = (lo.y - node.my).max(node.my - hi.y).max(0.0);
                 if node.width_sq < query.theta_sq * (dx * dx + dy * dy) {
                     self.push(Point2D::new(node.mx, node.my), node.charge);
                     continue;
                 }
             }
-            if node.children != NONE {
-                self.stack.extend(tree.occupied_children(node.children));
-                continue;
-            }
-            for b in tree.chain(node.body) {
-                self.push(tree.points[b as usize], 1.0);
-            }
+            self.stack.extend(tree.occupied_children(node.children));
+        }
+        while self.x.len() % LANES != 0 {
+            self.push(Point2D::origin(), 0.0);
         }
     }
 
@@ -189,12 +152,22 @@ impl GroupLists {
         self.charge.push(charge);
     }
 
-    /// The force on point `p` from the lists, in [`LANES`] independent sums (so the
-    /// loop runs in SIMD registers; a fixed order, so results repeat bit for bit).
-    fn sum(&self, p: Point2D<f32>, query: &Query) -> Vector2D<f32> {
-        // Branch-free, so the compiler keeps the lanes in vector registers: the point
-        // itself (and any coincident one, d² = 0) adds nothing, as in `walk`.
-        let term = |x: f32, y: f32, charge: f32| {
+    /// The force on point `p` from the lists: each entry's term in one loop (which the
+    /// compiler vectorises, divisions included), then the terms summed in [`LANES`]
+    /// independent sums, so the sum runs in vector registers too (a fixed order, so
+    /// results repeat bit for bit). The lists are padded to whole lanes with zero
+    /// charges.
+    fn sum(&mut self, p: Point2D<f32>, query: &Query) -> Vector2D<f32> {
+        let n = self.x.len();
+        self.terms_x.clear();
+        self.terms_x.resize(n, 0.0);
+        self.terms_y.clear();
+        self.terms_y.resize(n, 0.0);
+        let entries = self.x.iter().zip(&self.y).zip(&self.charge);
+        let terms = self.terms_x.iter_mut().zip(self.terms_y.iter_mut());
+        for (((x, y), charge), (tx, ty)) in entries.zip(terms) {
+            // Branch-free. The point itself (and any coincident one) adds nothing: its
+            // offset is zero and `soft` is positive.
             let (dx, dy) = (p.x - x, p.y - y);
             let d_sq = dx * dx + dy * dy;
             let soft = if d_sq > query.min_sq {
@@ -202,35 +175,20 @@ impl GroupLists {
             } else {
                 query.min_sq
             };
-            let s = if d_sq > 0.0 {
-                query.strength * charge / soft
-            } else {
-                0.0
-            };
-            (dx * s, dy * s)
-        };
+            let s = charge / soft;
+            (*tx, *ty) = (dx * s, dy * s);
+        }
         let (mut fx, mut fy) = ([0.0_f32; LANES], [0.0_f32; LANES]);
-        let xs = self.x.chunks_exact(LANES);
-        let ys = self.y.chunks_exact(LANES);
-        let charges = self.charge.chunks_exact(LANES);
-        let tail = (xs.remainder(), ys.remainder(), charges.remainder());
-        for ((x, y), charge) in xs.zip(ys).zip(charges) {
-            let (x, y, charge): (&[f32; LANES], &[f32; LANES], &[f32; LANES]) = (
-                x.try_into().expect("exact chunk"),
-                y.try_into().expect("exact chunk"),
-                charge.try_into().expect("exact chunk"),
-            );
+        let lanes = self
+            .terms_x
+            .chunks_exact(LANES)
+            .zip(self.terms_y.chunks_exact(LANES));
+        for (tx, ty) in lanes {
             for l in 0..LANES {
-                let (tx, ty) = term(x[l], y[l], charge[l]);
-                fx[l] += tx;
-                fy[l] += ty;
+                fx[l] += tx[l];
+                fy[l] += ty[l];
             }
         }
-        for ((&x, &y), &charge) in tail.0.iter().zip(tail.1).zip(tail.2) {
-            let (tx, ty) = term(x, y, charge);
-            fx[0] += tx;
-            fy[0] += ty;
-        }
-        Vector2D::new(fx.iter().sum(), fy.iter().sum())
+        Vector2D::new(fx.iter().sum(), fy.iter().sum()) * query.strength
     }
 }

@@ -30,8 +30,6 @@ struct Cell {
     half: f32,
     /// First child (4 consecutive cells) or `NONE` for a leaf.
     children: u32,
-    /// First body of a leaf's chain, or `NONE`.
-    body: u32,
 }
 
 impl Cell {
@@ -41,7 +39,6 @@ impl Cell {
             cy,
             half,
             children: NONE,
-            body: NONE,
         }
     }
 
@@ -53,7 +50,7 @@ impl Cell {
 /// What a force query reads of a cell, packed into 24 bytes (same index as [`Cell`]).
 #[derive(Clone, Copy, Debug, Default)]
 struct Node {
-    /// Charge-weighted centre and total charge.
+    /// Charge-weighted centre and total charge (the number of points under the cell).
     mx: f32,
     my: f32,
     charge: f32,
@@ -61,11 +58,24 @@ struct Node {
     /// `width_sq < theta² × d²`.
     width_sq: f32,
     children: u32,
-    body: u32,
+    /// The cell's points are `charge` consecutive entries of the tree order from here.
+    first: u32,
+}
+
+impl Node {
+    /// The cell's points, as positions in the tree order.
+    fn points(&self) -> std::ops::Range<usize> {
+        let first = self.first as usize;
+        first..first + self.charge as usize
+    }
 }
 
 /// A reusable Barnes–Hut quadtree: build it over positions, then ask for forces.
 /// Buffers are kept between calls, so a per-substep rebuild allocates nothing once warm.
+///
+/// The points are kept in the tree's own order (each cell's points consecutive, cells
+/// in depth-first order), so a walk reads memory close to where it last read: at
+/// 100,000 points the tree and points no longer fit a core's cache.
 ///
 /// # Example
 /// ```
@@ -80,107 +90,169 @@ struct Node {
 pub struct ManyBody {
     cells: Vec<Cell>,
     nodes: Vec<Node>,
-    next: Vec<u32>,
+    /// The given points, by their index.
     points: Vec<Point2D<f32>>,
+    /// The finite points in tree order, and the index each was given at.
+    sorted: Vec<Point2D<f32>>,
+    index: Vec<u32>,
+    /// Scratch for sorting a cell's points into its quadrants.
+    scratch: Vec<(Point2D<f32>, u32)>,
+    entries: Vec<(Point2D<f32>, u32)>,
     stack: Vec<u32>,
     lists: GroupLists,
 }
 
 impl ManyBody {
     /// Builds the tree over `points` (non-finite points are left out). O(n log n).
+    ///
+    /// A cell is split into four while it holds two points or more, down to
+    /// [`MAX_DEPTH`]; each split sorts the cell's points into its quadrants, top down.
     pub fn build(&mut self, points: &[Point2D<f32>]) {
         self.cells.clear();
         self.nodes.clear();
+        let same_points = points.len() == self.points.len();
         self.points.clear();
         self.points.extend_from_slice(points);
-        self.next.clear();
-        self.next.resize(points.len(), NONE);
-        let (mut lo, mut hi) = (
-            Point2D::new(f32::MAX, f32::MAX),
-            Point2D::new(f32::MIN, f32::MIN),
-        );
-        for p in points.iter().filter(|p| p.x.is_finite() && p.y.is_finite()) {
-            lo = lo.min(*p);
-            hi = hi.max(*p);
-        }
-        if lo.x > hi.x {
-            return;
-        }
-        let half = ((hi.x - lo.x).max(hi.y - lo.y) * 0.5).max(1.0) * 1.0001;
-        self.cells
-            .push(Cell::new((lo.x + hi.x) * 0.5, (lo.y + hi.y) * 0.5, half));
-        for (i, &p) in points.iter().enumerate() {
-            if p.x.is_finite() && p.y.is_finite() {
-                self.insert(i as u32, p);
+        self.gather_entries(same_points);
+        let mut entries = std::mem::take(&mut self.entries);
+        self.sorted.clear();
+        self.index.clear();
+        if !entries.is_empty() {
+            let (mut lo, mut hi) = (entries[0].0, entries[0].0);
+            for (p, _) in &entries {
+                lo = lo.min(*p);
+                hi = hi.max(*p);
             }
+            let half = ((hi.x - lo.x).max(hi.y - lo.y) * 0.5).max(1.0) * 1.0001;
+            self.cells
+                .push(Cell::new((lo.x + hi.x) * 0.5, (lo.y + hi.y) * 0.5, half));
+            self.nodes.push(Node {
+                children: NONE,
+                ..Node::default()
+            });
+            self.split(&mut entries);
+            self.sorted.extend(entries.iter().map(|e| e.0));
+            self.index.extend(entries.iter().map(|e| e.1));
+            self.sum_charges();
         }
-        // Children are created after their parents: a reverse sweep sums bottom-up.
-        self.nodes.resize(self.cells.len(), Node::default());
-        for c in (0..self.cells.len()).rev() {
-            let cell = self.cells[c];
-            let (mut q, mut mx, mut my) = (0.0_f32, 0.0_f32, 0.0_f32);
-            if cell.children == NONE {
-                for b in self.chain(cell.body) {
-                    let p = self.points[b as usize];
-                    q += 1.0;
-                    mx += p.x;
-                    my += p.y;
-                }
-            } else {
-                for k in 0..4 {
-                    let child = self.nodes[(cell.children + k) as usize];
-                    q += child.charge;
-                    mx += child.mx * child.charge;
-                    my += child.my * child.charge;
-                }
-            }
-            let width = 2.0 * cell.half;
-            self.nodes[c] = Node {
-                mx: if q > 0.0 { mx / q } else { 0.0 },
-                my: if q > 0.0 { my / q } else { 0.0 },
-                charge: q,
-                width_sq: width * width,
-                children: cell.children,
-                body: cell.body,
-            };
-        }
+        self.entries = entries;
     }
 
-    fn insert(&mut self, body: u32, p: Point2D<f32>) {
-        let mut c = 0_usize;
-        let mut depth = 0;
-        loop {
-            let cell = self.cells[c];
-            if cell.children != NONE {
-                c = (cell.children + cell.quadrant(p)) as usize;
-                depth += 1;
-                continue;
-            }
-            if cell.body == NONE || depth >= MAX_DEPTH {
-                self.next[body as usize] = cell.body;
-                self.cells[c].body = body;
+    /// The finite points with their indices, in the last build's tree order when the
+    /// same points are still finite (points move little from one build to the next, so
+    /// most cells are then sorted already), else in index order. The tree does not
+    /// depend on which: every cell's points are sorted into its quadrants, and a
+    /// deepest leaf's by index.
+    fn gather_entries(&mut self, same_points: bool) {
+        let finite = |p: &Point2D<f32>| p.x.is_finite() && p.y.is_finite();
+        self.entries.clear();
+        if same_points && self.points.iter().filter(|p| finite(p)).count() == self.index.len() {
+            let points = &self.points;
+            self.entries
+                .extend(self.index.iter().map(|&i| (points[i as usize], i)));
+            if self.entries.iter().all(|(p, _)| finite(p)) {
                 return;
             }
-            // Split the leaf and push its chain down one level.
-            let first = self.cells.len() as u32;
+            self.entries.clear();
+        }
+        self.entries.extend(
+            self.points
+                .iter()
+                .enumerate()
+                .filter(|(_, p)| finite(p))
+                .map(|(i, &p)| (p, i as u32)),
+        );
+    }
+
+    /// Splits the root and its descendants, depth first: each cell's points (a run of
+    /// `entries`) are sorted into its four quadrants, whose cells go at the end.
+    fn split(&mut self, entries: &mut [(Point2D<f32>, u32)]) {
+        // (cell, first entry, entries, depth)
+        let mut work = vec![(0_u32, 0_u32, entries.len() as u32, 0_u32)];
+        while let Some((c, first, count, depth)) = work.pop() {
+            self.nodes[c as usize].first = first;
+            self.nodes[c as usize].charge = count as f32;
+            let run = &mut entries[first as usize..(first + count) as usize];
+            if count < 2 {
+                continue;
+            }
+            if depth >= MAX_DEPTH {
+                run.sort_unstable_by_key(|e| e.1);
+                continue;
+            }
+            let cell = self.cells[c as usize];
+            let mut counts = [0_u32; 4];
+            let (mut last, mut sorted) = (0, true);
+            for (p, _) in run.iter() {
+                let q = cell.quadrant(*p);
+                counts[q as usize] += 1;
+                sorted &= q >= last;
+                last = q;
+            }
+            let mut starts = [0_u32, counts[0], counts[0] + counts[1], 0];
+            starts[3] = starts[2] + counts[2];
+            if !sorted {
+                self.scratch.clear();
+                self.scratch.extend_from_slice(run);
+                let mut at = starts;
+                for &(p, i) in &self.scratch {
+                    let q = cell.quadrant(p) as usize;
+                    run[at[q] as usize] = (p, i);
+                    at[q] += 1;
+                }
+            }
+            let children = self.cells.len() as u32;
+            self.cells[c as usize].children = children;
+            self.nodes[c as usize].children = children;
             let h = cell.half * 0.5;
             for k in 0..4_u32 {
                 let cx = if k & 1 == 1 { cell.cx + h } else { cell.cx - h };
                 let cy = if k & 2 == 2 { cell.cy + h } else { cell.cy - h };
                 self.cells.push(Cell::new(cx, cy, h));
+                self.nodes.push(Node {
+                    children: NONE,
+                    ..Node::default()
+                });
             }
-            self.cells[c].children = first;
-            let mut b = cell.body;
-            self.cells[c].body = NONE;
-            while b != NONE {
-                let following = self.next[b as usize];
-                let q = self.cells[c].quadrant(self.points[b as usize]) + first;
-                let child = &mut self.cells[q as usize];
-                self.next[b as usize] = child.body;
-                child.body = b;
-                b = following;
+            // The first quadrant on top of the stack: its cells follow its parent's.
+            for k in (0..4).rev() {
+                work.push((
+                    children + k,
+                    first + starts[k as usize],
+                    counts[k as usize],
+                    depth + 1,
+                ));
             }
-            // Chains of coincident points may land in one child again: loop on.
+        }
+    }
+
+    /// Centres and widths, bottom up: children are created after their parents, so a
+    /// reverse sweep sums each cell after its children.
+    fn sum_charges(&mut self) {
+        for c in (0..self.cells.len()).rev() {
+            let (mut mx, mut my) = (0.0_f32, 0.0_f32);
+            let node = self.nodes[c];
+            if node.children == NONE {
+                for p in &self.sorted[node.points()] {
+                    mx += p.x;
+                    my += p.y;
+                }
+            } else {
+                for k in 0..4 {
+                    let child = self.nodes[(node.children + k) as usize];
+                    mx += child.mx * child.charge;
+                    my += child.my * child.charge;
+                }
+            }
+            let q = node.charge;
+            let width = 2.0 * self.cells[c].half;
+            let node = &mut self.nodes[c];
+            (node.mx, node.my) = if q > 0.0 {
+                (mx / q, my / q)
+            } else {
+                (0.0, 0.0)
+            };
+            node.width_sq = width * width;
         }
     }
 
@@ -228,9 +300,9 @@ impl ManyBody {
                 }
                 continue;
             }
-            for b in self.chain(node.body) {
-                if b as usize != i {
-                    let q = self.points[b as usize];
+            for k in node.points() {
+                if self.index[k] as usize != i {
+                    let q = self.sorted[k];
                     let (dx, dy) = (p.x - q.x, p.y - q.y);
                     let d_sq = dx * dx + dy * dy;
                     if d_sq > 0.0 {
@@ -240,14 +312,6 @@ impl ManyBody {
             }
         }
         f
-    }
-
-    /// The points of the leaf chain starting at `first`.
-    fn chain(&self, first: u32) -> impl Iterator<Item = u32> + '_ {
-        std::iter::successors((first != NONE).then_some(first), move |&b| {
-            let next = self.next[b as usize];
-            (next != NONE).then_some(next)
-        })
     }
 
     /// The children (first at `children`) that hold a point: empty quadrants add
@@ -275,7 +339,9 @@ impl Query {
         Self {
             strength,
             theta_sq: theta * theta,
-            min_sq: min_distance * min_distance,
+            // Positive, so a point's own term (offset zero) is zero in `sum` without a
+            // branch.
+            min_sq: (min_distance * min_distance).max(f32::MIN_POSITIVE),
         }
     }
 }

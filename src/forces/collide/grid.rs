@@ -1,6 +1,8 @@
 //! Finding the pairs of disks that may touch during a substep: a uniform grid, its cells
 //! sorted by key, searched in the same and the neighbouring cells (and along the path of
-//! a body that moves further than a cell allows). The separation itself is in `mod.rs`.
+//! a body that moves further than a cell allows). The grid's order of the bodies is the
+//! order the separation works in (`pairs.rs`), so neighbours sit close in memory. The
+//! separation itself is in `mod.rs`.
 
 use euclid::default::{Point2D, Vector2D};
 
@@ -10,106 +12,180 @@ fn key(x: i64, y: i64) -> u64 {
     (((y + (1 << 31)) as u64) << 32) | ((x + (1 << 31)) as u64)
 }
 
+/// Which motion a cell allows, as a share of the bodies: the rest search along their path.
+const USUAL_SHARE: f64 = 0.9;
+
 /// The grid over one substep's bodies.
 #[derive(Debug, Default)]
 pub(super) struct Grid {
-    /// `(cell key, slot)` of every body, sorted.
+    /// `(cell key, slot)` of every body with a finite position, sorted: the grid order.
     cells: Vec<(u64, u32)>,
+    /// The width of a cell, the motion a cell allows and the largest radius.
+    cell: f32,
+    usual: f32,
+    largest: f32,
+    /// Scratch for the motions' quantile.
+    lengths: Vec<f32>,
+    /// The fast bodies' swept boxes `(left, right, top, bottom, body)`.
+    swept: Vec<(f32, f32, f32, f32, u32)>,
 }
 
 impl Grid {
-    /// Calls `pair(a, b)` for every two bodies (by slot) that may touch: within
-    /// `radius[a] + radius[b]` plus their `motion` over the substep. Pairs come in cell
-    /// order, so the same bodies give the same sequence; a pair may come twice.
+    /// Sorts the bodies (by slot) into the grid's cells and returns their slots in the
+    /// grid's order (cell by cell, row by row; bodies without a finite position are left
+    /// out). [`pairs`](Self::pairs) takes the bodies in this order.
     ///
-    /// The cells are as wide as the largest disk plus twice the usual motion (the
-    /// largest, up to a disk's width), so two bodies that may touch are in the same or
-    /// neighbouring cells; a body moving further searches every cell along its path (in
-    /// one pass over the bodies when the path crosses more rows than there are bodies).
-    pub(super) fn pairs(
+    /// The cells are as wide as the largest disk plus twice the usual motion (that of
+    /// nine bodies in ten, up to a disk's width), so two bodies that may touch and move
+    /// no further are in the same or neighbouring cells. Wider cells would hold more
+    /// bodies, and every two bodies of neighbouring cells are tested.
+    pub(super) fn sort(
         &mut self,
         points: &[Point2D<f32>],
         radius: &[f32],
         motion: &[Vector2D<f32>],
-        mut pair: impl FnMut(u32, u32),
-    ) {
-        let largest = radius.iter().copied().fold(0.0_f32, f32::max);
-        let fastest = motion.iter().map(|m| m.length()).fold(0.0_f32, f32::max);
-        let usual = fastest.min(2.0 * largest);
-        let cell = (2.0 * largest + 2.0 * usual).max(1.0);
-        let index = |v: f32| (v / cell).floor().clamp(-1.0e9, 1.0e9) as i64;
+    ) -> impl ExactSizeIterator<Item = u32> + '_ {
+        self.largest = radius.iter().copied().fold(0.0_f32, f32::max);
+        self.lengths.clear();
+        self.lengths.extend(motion.iter().map(|m| m.length()));
+        let usual = if self.lengths.is_empty() {
+            0.0
+        } else {
+            let at = ((self.lengths.len() - 1) as f64 * USUAL_SHARE) as usize;
+            *self.lengths.select_nth_unstable_by(at, f32::total_cmp).1
+        };
+        self.usual = usual.min(2.0 * self.largest);
+        self.cell = (2.0 * self.largest + 2.0 * self.usual).max(1.0);
+        let cell = self.cell;
         self.cells.clear();
         self.cells.extend(
             points
                 .iter()
                 .enumerate()
                 .filter(|(_, p)| p.is_finite())
-                .map(|(s, &p)| (key(index(p.x), index(p.y)), s as u32)),
+                .map(|(s, &p)| (key(index(p.x, cell), index(p.y, cell)), s as u32)),
         );
         self.cells.sort_unstable();
+        self.cells.iter().map(|&(_, s)| s)
+    }
+
+    /// Calls `pair(a, b, false)` for every two bodies in neighbouring cells, by their
+    /// place `a < b` in the grid's order (the order of [`sort`](Self::sort), which
+    /// `points` and `motion` follow), once each and in order (by `a`, then `b`); then
+    /// `pair(a, b, true)` for the bodies further apart that a body moving further than a
+    /// cell allows may meet on its path, in no order and possibly twice. Together they
+    /// hold every two bodies that come within `radius[a] + radius[b]` of each other
+    /// as they move.
+    ///
+    /// A fast body searches every cell along its path (in one pass over the bodies when
+    /// the path crosses more rows than there are bodies) for the slower ones; two fast
+    /// bodies may cross paths far from where either starts, so their swept boxes are
+    /// compared directly, sorted along x.
+    pub(super) fn pairs(
+        &mut self,
+        points: &[Point2D<f32>],
+        radius: &[f32],
+        motion: &[Vector2D<f32>],
+        mut pair: impl FnMut(u32, u32, bool),
+    ) {
         let cells = &self.cells;
         // The cells of the next row start at or after `below`: keys only grow.
         let mut below = 0;
-        for (i, &(k, a)) in cells.iter().enumerate() {
+        for (i, &(k, _)) in cells.iter().enumerate() {
             // The same cell (later entries) and the next cell of the same row.
-            for &(k2, b) in &cells[i + 1..] {
+            for (j, &(k2, _)) in cells.iter().enumerate().skip(i + 1) {
                 if k2 > k + 1 {
                     break;
                 }
-                pair(a, b);
+                pair(i as u32, j as u32, false);
             }
             // The three cells of the next row.
             let first = k + (1 << 32) - 1;
             while below < cells.len() && cells[below].0 < first {
                 below += 1;
             }
-            for &(k2, b) in &cells[below..] {
+            for (j, &(k2, _)) in cells.iter().enumerate().skip(below) {
                 if k2 > first + 2 {
                     break;
                 }
-                pair(a, b);
+                pair(i as u32, j as u32, false);
             }
         }
-        // Bodies moving further than the cells allow search along their path.
-        let reach = 2.0 * largest + usual;
+        // Bodies moving further than the cells allow search along their path, beyond
+        // the neighbouring cells (those pairs came above).
+        let (cell, usual) = (self.cell, self.usual);
+        let reach = 2.0 * self.largest + usual;
+        let near = |a: usize, b: usize| {
+            let ((row_a, column_a), (row_b, column_b)) =
+                (row_and_column(cells[a].0), row_and_column(cells[b].0));
+            (row_a - row_b).abs() <= 1 && (column_a - column_b).abs() <= 1
+        };
+        self.swept.clear();
         for (a, (&p, &m)) in points.iter().zip(motion).enumerate() {
-            if m.length() <= usual || !p.is_finite() {
+            if m.length() <= usual {
                 continue;
             }
             let (from, to) = (p, p + m);
             let (lo, hi) = (from.min(to), from.max(to));
-            let (top, bottom) = (index(lo.y - reach), index(hi.y + reach));
-            let (left, right) = (index(lo.x - reach), index(hi.x + reach));
+            let r = radius[a];
+            self.swept
+                .push((lo.x - r, hi.x + r, lo.y - r, hi.y + r, a as u32));
+            let (row_a, column_a) = row_and_column(cells[a].0);
+            let mut found = |b: usize, row: i64, column: i64| {
+                if (row - row_a).abs() > 1 || (column - column_a).abs() > 1 {
+                    pair(a.min(b) as u32, a.max(b) as u32, true);
+                }
+            };
+            let (top, bottom) = (index(lo.y - reach, cell), index(hi.y + reach, cell));
+            let (left, right) = (index(lo.x - reach, cell), index(hi.x + reach, cell));
             if (bottom - top) as usize >= cells.len() {
                 // A path across more rows than there are bodies (a drag across the
-                // canvas): one pass over the bodies finds the same cells, in the same
-                // (row by row) order, as a search of every row.
-                for &(k, b) in cells {
-                    let (row, column) = (
-                        (k >> 32) as i64 - (1 << 31),
-                        (k & 0xffff_ffff) as i64 - (1 << 31),
-                    );
-                    if (top..=bottom).contains(&row)
-                        && (left..=right).contains(&column)
-                        && b as usize != a
-                    {
-                        pair(a as u32, b);
+                // canvas): one pass over the bodies finds the same cells as a search of
+                // every row.
+                for (b, &(k, _)) in cells.iter().enumerate() {
+                    let (row, column) = row_and_column(k);
+                    if (top..=bottom).contains(&row) && (left..=right).contains(&column) {
+                        found(b, row, column);
                     }
                 }
                 continue;
             }
             for y in top..=bottom {
-                let (start, end) = (key(index(lo.x - reach), y), key(index(hi.x + reach), y));
+                let (start, end) = (key(left, y), key(right, y));
                 let first = cells.partition_point(|&(k, _)| k < start);
-                for &(k2, b) in &cells[first..] {
+                for (b, &(k2, _)) in cells.iter().enumerate().skip(first) {
                     if k2 > end {
                         break;
                     }
-                    if b as usize != a {
-                        pair(a as u32, b);
-                    }
+                    found(b, y, row_and_column(k2).1);
+                }
+            }
+        }
+        self.swept
+            .sort_unstable_by(|x, y| x.0.total_cmp(&y.0).then(x.4.cmp(&y.4)));
+        for (i, &(_, right, top, bottom, a)) in self.swept.iter().enumerate() {
+            for &(left_b, _, top_b, bottom_b, b) in &self.swept[i + 1..] {
+                if left_b > right {
+                    break;
+                }
+                let (a, b) = (a as usize, b as usize);
+                if top_b <= bottom && top <= bottom_b && !near(a, b) {
+                    pair(a.min(b) as u32, a.max(b) as u32, true);
                 }
             }
         }
     }
+}
+
+/// The row and column of a cell's key.
+fn row_and_column(k: u64) -> (i64, i64) {
+    (
+        (k >> 32) as i64 - (1 << 31),
+        (k & 0xffff_ffff) as i64 - (1 << 31),
+    )
+}
+
+/// The cell a coordinate falls in.
+fn index(v: f32, cell: f32) -> i64 {
+    (v / cell).floor().clamp(-1.0e9, 1.0e9) as i64
 }

@@ -28,9 +28,11 @@ use crate::config::ContactSoftness;
 use crate::world::RapierSceneWorld;
 
 mod grid;
+mod pairs;
 mod projection;
 
 use grid::Grid;
+use pairs::{BySlot, Pair, NONE};
 
 /// A sleeping body that an awake one would push into faster than this (world units per
 /// second: rapier's sleep threshold at the default length unit) wakes.
@@ -52,23 +54,6 @@ const MAX_PUSH_SPEED: f32 = 1_000.0;
 fn coincident_normal(a: u32, b: u32) -> Vector2D<f32> {
     let angle = a as f32 * 2.399_963 + b as f32 * 0.618_034;
     Vector2D::new(angle.cos(), angle.sin())
-}
-
-/// Two bodies close enough to touch during the substep.
-#[derive(Clone, Copy, Debug)]
-struct Pair {
-    a: u32,
-    b: u32,
-    /// From `a` to `b`.
-    normal: Vector2D<f32>,
-    /// Distance minus the sum of the radii (negative in an overlap).
-    separation: f32,
-    /// The normal impulse so far, divided by the mass (a change of relative speed).
-    impulse: f32,
-    /// The share of a change of relative speed each body takes: its inverse mass over
-    /// the two's (0 for a body that does not give way).
-    share_a: f32,
-    share_b: f32,
 }
 
 /// The soft-constraint coefficients of one substep (Box2D v3's `b2Softness`).
@@ -95,10 +80,22 @@ impl Softness {
 }
 
 /// The buffers of the disk separation, kept from substep to substep.
+///
+/// The bodies are taken in the grid's order (`pairs.rs`): `order[l]` is the world slot
+/// of local body `l` and `local[s]` the local index of slot `s`; the per-body arrays
+/// below are by local index.
 #[derive(Debug, Default)]
 pub(crate) struct Collide {
     grid: Grid,
+    by_slot: BySlot,
+    order: Vec<u32>,
+    local: Vec<u32>,
+    /// Sorted by their first body, which starts its pairs at `rows[a]`.
     pairs: Vec<Pair>,
+    rows: Vec<u32>,
+    /// The pairs fast bodies found beyond the neighbouring cells, before they join `pairs`.
+    extra: Vec<Pair>,
+    points: Vec<Point2D<f32>>,
     radius: Vec<f32>,
     inverse_mass: Vec<f32>,
     /// Each body's velocity during the solve, and what it was before.
@@ -106,13 +103,12 @@ pub(crate) struct Collide {
     before: Vec<Vector2D<f32>>,
     /// Each body's displacement over the substep as the pairs are found.
     motion: Vec<Vector2D<f32>>,
-    /// After the step: the positions of the bodies in pairs, and which were read.
-    points: Vec<Point2D<f32>>,
+    /// After the step: which bodies in pairs were read anew.
     read: Vec<bool>,
     /// Dynamic bodies asleep (until a pair wakes them).
     sleeping: Vec<bool>,
-    /// Last substep's pairs `(a, b, impulse)`, sorted, for warm starting, and the world
-    /// version they belong to (slots change with the bodies).
+    /// Last substep's pairs `(slot a, slot b, impulse)`, for warm starting, and the
+    /// world version they belong to (slots change with the bodies).
     last: Vec<(u32, u32, f32)>,
     last_version: Option<u64>,
     /// The softness of the last [`resolve`](Self::resolve).
@@ -133,7 +129,8 @@ impl Collide {
         dt: f32,
     ) -> bool {
         self.prepare(world, bodies, dt);
-        self.find_pairs(&bodies.points, 0.0);
+        self.take_in_grid_order(&bodies.points);
+        self.find_pairs(0.0);
         if self.pairs.is_empty() {
             self.last.clear();
             self.softness = None;
@@ -153,7 +150,8 @@ impl Collide {
 
     /// The velocity change [`resolve`](Self::resolve) gives the body in slot `s`.
     pub(crate) fn change(&self, s: usize) -> Vector2D<f32> {
-        match (self.velocity.get(s), self.before.get(s)) {
+        let l = self.local.get(s).map_or(NONE, |&l| l) as usize;
+        match (self.velocity.get(l), self.before.get(l)) {
             (Some(&v), Some(&b)) if self.softness.is_some() => v - b,
             _ => Vector2D::zero(),
         }
@@ -165,27 +163,27 @@ impl Collide {
         if self.softness.take().is_none() {
             return;
         }
-        let n = world.slot_count().min(self.velocity.len());
+        let slots = world.slot_count();
+        let n = self.order.len();
         // Only the bodies in pairs: their new velocities and positions.
-        self.points.clear();
-        self.points.resize(n, Point2D::origin());
         self.read.clear();
         self.read.resize(n, false);
         for pair in &self.pairs {
-            for s in [pair.a as usize, pair.b as usize] {
-                if s < n && !self.read[s] {
-                    self.read[s] = true;
+            for l in [pair.a as usize, pair.b as usize] {
+                let s = self.order[l] as usize;
+                if s < slots && !self.read[l] {
+                    self.read[l] = true;
                     let body = world.body_at(s);
                     let (t, v) = (body.translation(), body.linvel());
-                    self.points[s] = Point2D::new(t.x, t.y);
-                    self.velocity[s] = Vector2D::new(v.x, v.y);
-                    self.before[s] = self.velocity[s];
+                    self.points[l] = Point2D::new(t.x, t.y);
+                    self.velocity[l] = Vector2D::new(v.x, v.y);
+                    self.before[l] = self.velocity[l];
                 }
             }
         }
         for pair in &mut self.pairs {
             let (a, b) = (pair.a as usize, pair.b as usize);
-            if a < n && b < n {
+            if self.read[a] && self.read[b] {
                 let reach = self.radius[a] + self.radius[b];
                 pair.separation = (self.points[b] - self.points[a]).length() - reach;
             }
@@ -195,12 +193,12 @@ impl Collide {
                 break;
             }
         }
-        for s in 0..n {
-            let change = self.velocity[s] - self.before[s];
-            if !self.read[s] || change == Vector2D::zero() {
+        for l in 0..n {
+            let change = self.velocity[l] - self.before[l];
+            if !self.read[l] || change == Vector2D::zero() {
                 continue;
             }
-            let body = world.body_at_mut(s);
+            let body = world.body_at_mut(self.order[l] as usize);
             if body.is_dynamic() {
                 let v = body.linvel() + Vector::new(change.x, change.y);
                 if v.is_finite() {
@@ -208,32 +206,22 @@ impl Collide {
                 }
             }
         }
-        self.last.clear();
-        self.last.extend(
-            self.pairs
-                .iter()
-                .filter(|p| p.impulse > 0.0)
-                .map(|p| (p.a, p.b, p.impulse)),
-        );
-        self.last_version = Some(world.version());
+        self.keep_impulses(world.version());
     }
 
     /// Radii, inverse masses (0 for bodies that do not give way), velocities and
-    /// predicted motion.
+    /// predicted motion, by slot.
     fn prepare<N: Clone + Eq + Hash>(
         &mut self,
         world: &RapierSceneWorld<N>,
         bodies: &Bodies,
         dt: f32,
     ) {
-        self.radius.clear();
-        self.inverse_mass.clear();
-        self.motion.clear();
-        self.velocity.clear();
-        self.sleeping.clear();
-        self.sleeping.extend_from_slice(&bodies.sleeping);
+        let by_slot = &mut self.by_slot;
+        by_slot.clear();
+        by_slot.sleeping.extend_from_slice(&bodies.sleeping);
         for (s, &p) in bodies.points.iter().enumerate() {
-            self.radius.push(world.shape_at(s).bounding_radius());
+            by_slot.radius.push(world.shape_at(s).bounding_radius());
             let (inverse_mass, velocity) = if bodies.pushed[s] {
                 (1.0 / world.mass_at(s), bodies.velocities[s])
             } else {
@@ -245,84 +233,9 @@ impl Collide {
             } else {
                 Vector2D::zero()
             };
-            self.inverse_mass.push(inverse_mass);
-            self.velocity.push(velocity);
-            self.motion.push(velocity * dt);
-        }
-        self.before.clear();
-        self.before.extend_from_slice(&self.velocity);
-    }
-
-    /// The pairs that may touch, or come within `margin` of touching, each once,
-    /// ordered by their slots.
-    fn find_pairs(&mut self, points: &[Point2D<f32>], margin: f32) {
-        let Self {
-            grid,
-            pairs,
-            radius,
-            inverse_mass,
-            motion,
-            ..
-        } = self;
-        pairs.clear();
-        grid.pairs(points, radius, motion, |a, b| {
-            let (a, b) = (a.min(b), a.max(b));
-            let (ia, ib) = (a as usize, b as usize);
-            let reach = radius[ia] + radius[ib];
-            let d = points[ib] - points[ia];
-            let near = reach + (motion[ib] - motion[ia]).length() + margin;
-            let distance_sq = d.square_length();
-            if distance_sq > near * near {
-                return;
-            }
-            let distance = distance_sq.sqrt();
-            let still = motion[ia] == Vector2D::zero() && motion[ib] == Vector2D::zero();
-            if inverse_mass[ia] == 0.0
-                && inverse_mass[ib] == 0.0
-                && still
-                && distance >= reach - SLEEPING_OVERLAP
-            {
-                // Neither gives way nor moves, and they do not overlap: nothing to part.
-                // (Two that fell asleep overlapping are woken and parted.)
-                return;
-            }
-            let normal = if distance > 1e-6 {
-                d / distance
-            } else {
-                coincident_normal(a, b)
-            };
-            pairs.push(Pair {
-                a,
-                b,
-                normal,
-                separation: distance - reach,
-                impulse: 0.0,
-                share_a: 0.0,
-                share_b: 0.0,
-            });
-        });
-        pairs.sort_unstable_by_key(|p| (p.a, p.b));
-        pairs.dedup_by_key(|p| (p.a, p.b));
-    }
-
-    /// Starts each pair from the impulse it ended the last substep with.
-    fn warm_start(&mut self, version: u64) {
-        let warm = self.last_version == Some(version);
-        let mut j = 0;
-        for k in 0..self.pairs.len() {
-            let pair = self.pairs[k];
-            if !warm {
-                continue;
-            }
-            let key = (pair.a, pair.b);
-            while j < self.last.len() && (self.last[j].0, self.last[j].1) < key {
-                j += 1;
-            }
-            if let Some(&(a, b, impulse)) = self.last.get(j) {
-                if (a, b) == key {
-                    self.push(k, impulse);
-                }
-            }
+            by_slot.inverse_mass.push(inverse_mass);
+            by_slot.velocity.push(velocity);
+            by_slot.motion.push(velocity * dt);
         }
     }
 
@@ -376,11 +289,12 @@ impl Collide {
                     // A sleeping body pushed into, or overlapped, wakes and gives way;
                     // one that an awake body only rests against (more slowly than a
                     // body falls asleep) stays asleep.
-                    for s in [a, b] {
-                        if self.sleeping[s] {
-                            self.sleeping[s] = false;
+                    for l in [a, b] {
+                        if self.sleeping[l] {
+                            self.sleeping[l] = false;
+                            let s = self.order[l] as usize;
                             world.body_at_mut(s).wake_up(true);
-                            self.inverse_mass[s] = 1.0 / world.mass_at(s);
+                            self.inverse_mass[l] = 1.0 / world.mass_at(s);
                         }
                     }
                     woke = true;
@@ -414,6 +328,7 @@ impl Collide {
 
     /// Adds `change` (a change of the pair's relative normal speed) to pair `k`,
     /// shared between the two bodies.
+    #[inline]
     fn push(&mut self, k: usize, change: f32) {
         let pair = &mut self.pairs[k];
         if pair.share_a + pair.share_b == 0.0 {

@@ -35,39 +35,39 @@ impl Collide {
         world: &mut RapierSceneWorld<N>,
     ) -> f32 {
         let n = world.slot_count();
-        self.points.clear();
-        self.radius.clear();
-        self.inverse_mass.clear();
-        self.motion.clear();
+        let mut start = std::mem::take(&mut self.points);
+        start.clear();
+        self.by_slot.clear();
         for s in 0..n {
             let body = world.body_at(s);
             let t = body.translation();
-            self.points.push(Point2D::new(t.x, t.y));
-            self.radius.push(world.shape_at(s).bounding_radius());
-            let gives_way = body.is_dynamic();
-            self.inverse_mass.push(if gives_way {
+            start.push(Point2D::new(t.x, t.y));
+            self.by_slot
+                .radius
+                .push(world.shape_at(s).bounding_radius());
+            self.by_slot.inverse_mass.push(if body.is_dynamic() {
                 1.0 / world.mass_at(s)
             } else {
                 0.0
             });
             // Widens the grid's cells by the margin.
-            self.motion.push(Vector2D::new(MARGIN, 0.0));
+            self.by_slot.motion.push(Vector2D::new(MARGIN, 0.0));
         }
-        let start = std::mem::take(&mut self.points);
-        self.find_pairs(&start, MARGIN);
+        self.take_in_grid_order(&start);
+        self.find_pairs(MARGIN);
         self.share();
-        self.points.clone_from(&start);
+        let from = self.points.clone();
         for _ in 0..PASSES {
             if self.project_pass() < PARTED {
                 break;
             }
         }
         let mut farthest = 0.0_f32;
-        for (s, (&p, &from)) in self.points.iter().zip(&start).enumerate() {
+        for (l, (&p, &from)) in self.points.iter().zip(&from).enumerate() {
             if p != from && p.is_finite() {
                 farthest = farthest.max((p - from).length());
                 world
-                    .body_at_mut(s)
+                    .body_at_mut(self.order[l] as usize)
                     .set_translation(Vector::new(p.x, p.y), false);
             }
         }
@@ -92,7 +92,7 @@ impl Collide {
             let normal = if distance > 1e-6 {
                 d / distance
             } else {
-                super::coincident_normal(pair.a, pair.b)
+                pair.normal
             };
             self.points[a] -= normal * (overlap * pair.share_a);
             self.points[b] += normal * (overlap * pair.share_b);

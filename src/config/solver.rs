@@ -175,7 +175,7 @@ pub enum ContactModel {
     /// The layout's own disk separation (d3-force's `forceCollide`, made firm): every
     /// substep the pairs of disks that may touch are found on a uniform grid and solved
     /// as soft contacts the way Box2D v3 solves its own (warm-started impulses, up to
-    /// eight passes before the step and eight after it that take out the push's speed,
+    /// eight passes before the step and four after it that take out the push's speed,
     /// so parted disks stop instead of flying apart), at the frequency and damping of
     /// [`ContactSoftness`]. Impulses only push. Dragged and pinned nodes push and do not
     /// give way; a sleeping node pressed into wakes. When a cooling schedule halts the

@@ -17,6 +17,24 @@ mod groups;
 use groups::GroupLists;
 
 const NONE: u32 = u32::MAX;
+/// The place of a point of the root square (`x`, `y` in `[0, 1)`) on the Z-order
+/// curve: the quadrant it falls in at every depth down to [`MAX_DEPTH`], the deepest
+/// last (x in the low bit of each pair, y in the high one, as children are numbered).
+fn z_order(x: f32, y: f32) -> u64 {
+    let scale = (1_u32 << MAX_DEPTH) as f32;
+    let limit = (1_u64 << MAX_DEPTH) - 1;
+    // The bits of the cell index, each followed by a zero.
+    let spread = |v: f32| {
+        let mut q = ((v * scale) as u64).min(limit);
+        q = (q | (q << 16)) & 0x0000_ffff_0000_ffff;
+        q = (q | (q << 8)) & 0x00ff_00ff_00ff_00ff;
+        q = (q | (q << 4)) & 0x0f0f_0f0f_0f0f_0f0f;
+        q = (q | (q << 2)) & 0x3333_3333_3333_3333;
+        (q | (q << 1)) & 0x5555_5555_5555_5555
+    };
+    spread(x) | (spread(y) << 1)
+}
+
 /// Deeper than this, points share a leaf (they are closer than the root width / 2^24,
 /// below f32 resolution anyway).
 const MAX_DEPTH: u32 = 24;
@@ -40,10 +58,6 @@ impl Cell {
             half,
             children: NONE,
         }
-    }
-
-    fn quadrant(&self, p: Point2D<f32>) -> u32 {
-        u32::from(p.x >= self.cx) | (u32::from(p.y >= self.cy) << 1)
     }
 }
 
@@ -95,9 +109,10 @@ pub struct ManyBody {
     /// The finite points in tree order, and the index each was given at.
     sorted: Vec<Point2D<f32>>,
     index: Vec<u32>,
-    /// Scratch for sorting a cell's points into its quadrants.
-    scratch: Vec<(Point2D<f32>, u32)>,
-    entries: Vec<(Point2D<f32>, u32)>,
+    /// Every finite point's Z-order code and index, sorted.
+    entries: Vec<(u64, u32)>,
+    /// The cells still to split.
+    work: Vec<(u32, u32, u32, u32)>,
     stack: Vec<u32>,
     lists: GroupLists,
 }
@@ -106,7 +121,9 @@ impl ManyBody {
     /// Builds the tree over `points` (non-finite points are left out). O(n log n).
     ///
     /// A cell is split into four while it holds two points or more, down to
-    /// [`MAX_DEPTH`]; each split sorts the cell's points into its quadrants, top down.
+    /// [`MAX_DEPTH`]. The points are sorted once by their place on a Z-order curve over
+    /// the root square (the quadrant at every depth, 24 bits each way), so every cell's
+    /// points are one run of the order and its quadrants four runs of it.
     pub fn build(&mut self, points: &[Point2D<f32>]) {
         self.cells.clear();
         self.nodes.clear();
@@ -114,93 +131,83 @@ impl ManyBody {
         self.points.clear();
         self.points.extend_from_slice(points);
         self.gather_entries(same_points);
-        let mut entries = std::mem::take(&mut self.entries);
         self.sorted.clear();
         self.index.clear();
-        if !entries.is_empty() {
-            let (mut lo, mut hi) = (entries[0].0, entries[0].0);
-            for (p, _) in &entries {
-                lo = lo.min(*p);
-                hi = hi.max(*p);
-            }
-            let half = ((hi.x - lo.x).max(hi.y - lo.y) * 0.5).max(1.0) * 1.0001;
-            self.cells
-                .push(Cell::new((lo.x + hi.x) * 0.5, (lo.y + hi.y) * 0.5, half));
-            self.nodes.push(Node {
-                children: NONE,
-                ..Node::default()
-            });
-            self.split(&mut entries);
-            self.sorted.extend(entries.iter().map(|e| e.0));
-            self.index.extend(entries.iter().map(|e| e.1));
-            self.sum_charges();
+        let finite = self.entries.iter().map(|&(_, i)| self.points[i as usize]);
+        let Some((lo, hi)) =
+            finite.fold(None, |bounds: Option<(Point2D<f32>, Point2D<f32>)>, p| {
+                Some(bounds.map_or((p, p), |(lo, hi)| (lo.min(p), hi.max(p))))
+            })
+        else {
+            return;
+        };
+        let half = ((hi.x - lo.x).max(hi.y - lo.y) * 0.5).max(1.0) * 1.0001;
+        let root = Cell::new((lo.x + hi.x) * 0.5, (lo.y + hi.y) * 0.5, half);
+        self.cells.push(root);
+        self.nodes.push(Node {
+            children: NONE,
+            ..Node::default()
+        });
+        let (x0, y0, side) = (root.cx - half, root.cy - half, 2.0 * half);
+        let points = &self.points;
+        for entry in &mut self.entries {
+            let p = points[entry.1 as usize];
+            entry.0 = z_order((p.x - x0) / side, (p.y - y0) / side);
         }
-        self.entries = entries;
+        // Stable and adaptive: the last build's order is nearly this one. Codes are
+        // ties only within a deepest leaf, whose points then keep their index order.
+        self.entries.sort_by_key(|&(code, _)| code);
+        self.index.extend(self.entries.iter().map(|e| e.1));
+        self.sorted
+            .extend(self.index.iter().map(|&i| points[i as usize]));
+        self.split();
+        self.sum_charges();
     }
 
-    /// The finite points with their indices, in the last build's tree order when the
-    /// same points are still finite (points move little from one build to the next, so
-    /// most cells are then sorted already), else in index order. The tree does not
-    /// depend on which: every cell's points are sorted into its quadrants, and a
-    /// deepest leaf's by index.
+    /// The finite points' indices (codes to be filled in), in the last build's tree
+    /// order when the same points are still finite, else in index order. The tree does
+    /// not depend on which.
     fn gather_entries(&mut self, same_points: bool) {
         let finite = |p: &Point2D<f32>| p.x.is_finite() && p.y.is_finite();
         self.entries.clear();
         if same_points && self.points.iter().filter(|p| finite(p)).count() == self.index.len() {
             let points = &self.points;
-            self.entries
-                .extend(self.index.iter().map(|&i| (points[i as usize], i)));
-            if self.entries.iter().all(|(p, _)| finite(p)) {
+            if self.index.iter().all(|&i| finite(&points[i as usize])) {
+                // A deepest leaf's points in index order, as a fresh build has them.
+                self.entries.extend(self.index.iter().map(|&i| (0, i)));
                 return;
             }
-            self.entries.clear();
         }
         self.entries.extend(
             self.points
                 .iter()
                 .enumerate()
                 .filter(|(_, p)| finite(p))
-                .map(|(i, &p)| (p, i as u32)),
+                .map(|(i, _)| (0, i as u32)),
         );
     }
 
-    /// Splits the root and its descendants, depth first: each cell's points (a run of
-    /// `entries`) are sorted into its four quadrants, whose cells go at the end.
-    fn split(&mut self, entries: &mut [(Point2D<f32>, u32)]) {
+    /// Splits the root and its descendants, depth first: a cell's quadrants are the four
+    /// runs of its points by the code's two bits at its depth; their cells go at the end.
+    fn split(&mut self) {
         // (cell, first entry, entries, depth)
-        let mut work = vec![(0_u32, 0_u32, entries.len() as u32, 0_u32)];
+        let mut work = std::mem::take(&mut self.work);
+        work.clear();
+        work.push((0_u32, 0_u32, self.entries.len() as u32, 0_u32));
         while let Some((c, first, count, depth)) = work.pop() {
             self.nodes[c as usize].first = first;
             self.nodes[c as usize].charge = count as f32;
-            let run = &mut entries[first as usize..(first + count) as usize];
-            if count < 2 {
+            if count < 2 || depth >= MAX_DEPTH {
                 continue;
             }
-            if depth >= MAX_DEPTH {
-                run.sort_unstable_by_key(|e| e.1);
-                continue;
+            let shift = 2 * (MAX_DEPTH - 1 - depth);
+            let run = &self.entries[first as usize..(first + count) as usize];
+            let quadrant = |e: &(u64, u32)| ((e.0 >> shift) & 3) as u32;
+            let mut starts = [0_u32, 0, 0, 0, count];
+            for (q, start) in (1_u32..).zip(&mut starts[1..4]) {
+                *start = run.partition_point(|e| quadrant(e) < q) as u32;
             }
             let cell = self.cells[c as usize];
-            let mut counts = [0_u32; 4];
-            let (mut last, mut sorted) = (0, true);
-            for (p, _) in run.iter() {
-                let q = cell.quadrant(*p);
-                counts[q as usize] += 1;
-                sorted &= q >= last;
-                last = q;
-            }
-            let mut starts = [0_u32, counts[0], counts[0] + counts[1], 0];
-            starts[3] = starts[2] + counts[2];
-            if !sorted {
-                self.scratch.clear();
-                self.scratch.extend_from_slice(run);
-                let mut at = starts;
-                for &(p, i) in &self.scratch {
-                    let q = cell.quadrant(p) as usize;
-                    run[at[q] as usize] = (p, i);
-                    at[q] += 1;
-                }
-            }
             let children = self.cells.len() as u32;
             self.cells[c as usize].children = children;
             self.nodes[c as usize].children = children;
@@ -216,14 +223,11 @@ impl ManyBody {
             }
             // The first quadrant on top of the stack: its cells follow its parent's.
             for k in (0..4).rev() {
-                work.push((
-                    children + k,
-                    first + starts[k as usize],
-                    counts[k as usize],
-                    depth + 1,
-                ));
+                let (start, end) = (starts[k], starts[k + 1]);
+                work.push((children + k as u32, first + start, end - start, depth + 1));
             }
         }
+        self.work = work;
     }
 
     /// Centres and widths, bottom up: children are created after their parents, so a

@@ -24,8 +24,6 @@ pub(super) struct Pair {
     pub(super) normal: Vector2D<f32>,
     /// Distance minus the sum of the radii (negative in an overlap).
     pub(super) separation: f32,
-    /// The normal impulse so far, divided by the mass (a change of relative speed).
-    pub(super) impulse: f32,
     /// The share of a change of relative speed each body takes: its inverse mass over
     /// the two's (0 for a body that does not give way).
     pub(super) share_a: f32,
@@ -141,7 +139,6 @@ impl Collide {
                 b,
                 normal,
                 separation: distance - reach,
-                impulse: 0.0,
                 share_a: 0.0,
                 share_b: 0.0,
             };
@@ -154,6 +151,8 @@ impl Collide {
         if !self.extra.is_empty() {
             self.merge_extra();
         }
+        self.impulses.clear();
+        self.impulses.resize(self.pairs.len(), 0.0);
         self.rows.clear();
         self.rows.resize(self.order.len() + 1, 0);
         for pair in &self.pairs {
@@ -170,7 +169,8 @@ impl Collide {
         self.extra.sort_unstable_by_key(|p| (p.a, p.b));
         self.extra.dedup_by_key(|p| (p.a, p.b));
         let near = std::mem::take(&mut self.pairs);
-        let mut merged = Vec::with_capacity(near.len() + self.extra.len());
+        let mut merged = std::mem::take(&mut self.merged);
+        merged.clear();
         let (mut i, mut j) = (0, 0);
         while i < near.len() || j < self.extra.len() {
             let take_near = j == self.extra.len()
@@ -184,6 +184,7 @@ impl Collide {
             }
         }
         self.pairs = merged;
+        self.merged = near;
     }
 
     /// Starts each pair from the impulse it ended the last substep with, found by its
@@ -217,8 +218,9 @@ impl Collide {
         self.last.extend(
             self.pairs
                 .iter()
-                .filter(|p| p.impulse > 0.0)
-                .map(|p| (order[p.a as usize], order[p.b as usize], p.impulse)),
+                .zip(&self.impulses)
+                .filter(|(_, &impulse)| impulse > 0.0)
+                .map(|(p, &impulse)| (order[p.a as usize], order[p.b as usize], impulse)),
         );
         self.last_version = Some(version);
     }

@@ -159,12 +159,14 @@ impl GroupLists {
     /// charges.
     fn sum(&mut self, p: Point2D<f32>, query: &Query) -> Vector2D<f32> {
         let n = self.x.len();
-        self.terms_x.clear();
-        self.terms_x.resize(n, 0.0);
-        self.terms_y.clear();
-        self.terms_y.resize(n, 0.0);
+        // Every term below is written before it is read: the buffers only grow.
+        if self.terms_x.len() < n {
+            self.terms_x.resize(n, 0.0);
+            self.terms_y.resize(n, 0.0);
+        }
+        let (terms_x, terms_y) = (&mut self.terms_x[..n], &mut self.terms_y[..n]);
         let entries = self.x.iter().zip(&self.y).zip(&self.charge);
-        let terms = self.terms_x.iter_mut().zip(self.terms_y.iter_mut());
+        let terms = terms_x.iter_mut().zip(terms_y.iter_mut());
         for (((x, y), charge), (tx, ty)) in entries.zip(terms) {
             // Branch-free. The point itself (and any coincident one) adds nothing: its
             // offset is zero and `soft` is positive.
@@ -179,10 +181,7 @@ impl GroupLists {
             (*tx, *ty) = (dx * s, dy * s);
         }
         let (mut fx, mut fy) = ([0.0_f32; LANES], [0.0_f32; LANES]);
-        let lanes = self
-            .terms_x
-            .chunks_exact(LANES)
-            .zip(self.terms_y.chunks_exact(LANES));
+        let lanes = terms_x.chunks_exact(LANES).zip(terms_y.chunks_exact(LANES));
         for (tx, ty) in lanes {
             for l in 0..LANES {
                 fx[l] += tx[l];

@@ -5,14 +5,16 @@
 //! (the graph is still in motion then) and restart from a fresh, warmed layout every 240
 //! timed frames, so every sample measures the same kind of state: the mean frame of whole
 //! windows, however few calls criterion asks for. `asleep` benchmarks
-//! time a layout that `is_converged`.
+//! time a layout that `is_converged`. The `huge` group times the first 60 frames of a
+//! 100,000-node graph, the world's first build included: what a host waits through when
+//! such a graph opens (`cargo bench --bench step -- random_n100000`).
 
 mod common;
 
 use std::time::{Duration, Instant};
 
 use common::*;
-use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use criterion::{black_box, criterion_group, criterion_main, Criterion, SamplingMode};
 use graph_canvas_layout::{Accuracy, Layout, RapierLayoutConfig};
 
 const WARM: usize = 30;
@@ -81,6 +83,39 @@ fn persistent_from(
             )
         })
     });
+}
+
+/// The first `frames` frames of a fresh layout of `name`, its first build included, as
+/// the mean frame of whole runs (each run lays the graph out anew); asserts it moves.
+fn first_frames(
+    c: &mut Criterion,
+    name: &str,
+    config: RapierLayoutConfig,
+    frames: u64,
+    label: &str,
+) {
+    let scene = scene(name);
+    let mut group = c.benchmark_group(format!("step/{name}"));
+    // Every sample the same number of whole runs.
+    group.sampling_mode(SamplingMode::Flat);
+    group.bench_function(label, |b| {
+        b.iter_custom(|iters| {
+            let runs = iters.div_ceil(frames).max(1);
+            let mut total = Duration::ZERO;
+            for _ in 0..runs {
+                let mut host = Host::new(scene.clone(), config.clone());
+                let mut moved = 0;
+                let started = Instant::now();
+                for _ in 0..frames {
+                    moved += black_box(host.frame()).len();
+                }
+                total += started.elapsed();
+                assert!(moved > 0, "{name}: nothing moved in {frames} frames");
+            }
+            total.mul_f64(iters as f64 / (runs * frames) as f64)
+        })
+    });
+    group.finish();
 }
 
 fn bare(c: &mut Criterion, name: &str, model: BareModel, label: &str) {
@@ -293,9 +328,27 @@ criterion_group! {
     config = Criterion::default().sample_size(30).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(4));
     targets = headline, presets, force_directed, scaling
 }
+/// The first 60 frames of a random graph of 100,000 nodes and 250,000 edges (seeded,
+/// on d3's spiral): the README sets their mean beside d3-force's tick.
+fn huge(c: &mut Criterion) {
+    first_frames(
+        c,
+        "random_n100000_e250000",
+        RapierLayoutConfig::force_directed(),
+        60,
+        "force_directed_first_60",
+    );
+}
+
 criterion_group! {
     name = big;
     config = Criterion::default().sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(8));
     targets = large
 }
-criterion_main!(small, big);
+criterion_group! {
+    name = very_big;
+    // Each sample times whole 60-frame runs (about 10 s each).
+    config = Criterion::default().sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(90));
+    targets = huge
+}
+criterion_main!(small, big, very_big);

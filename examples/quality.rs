@@ -3,9 +3,11 @@
 //! variation), overlapping node pairs, edge crossings, frames to settle, and the step
 //! time. `scripts/d3-quality.mjs` measures d3-force on the same scenes.
 //!
-//! Run with `cargo run --release --example quality [--fast] [--starts N] [--duration S]
-//! [--frames N] [--leave-out SETTING] [--write-scenes] [scene ...]`:
+//! Run with `cargo run --release --example quality [--fast | --default] [--starts N]
+//! [--duration S] [--frames N] [--leave-out SETTING] [--write-scenes] [scene ...]`:
 //! - `--fast`: `RapierLayoutConfig::force_directed_fast()`;
+//! - `--default`: `RapierLayoutConfig::default()` (no repulsion: for the README's preset
+//!   table, with `--frames 300`);
 //! - `--duration S`: a cooling schedule of `S` seconds;
 //! - `--frames N`: stop after `N` frames (default 3,000), to time the first frames;
 //! - `--leave-out`: one of `spring_exponent`, `spring_degree_exponent`, `link_bias`,
@@ -202,6 +204,8 @@ fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mut config = if args.iter().any(|a| a == "--fast") {
         RapierLayoutConfig::force_directed_fast()
+    } else if args.iter().any(|a| a == "--default") {
+        RapierLayoutConfig::default()
     } else {
         RapierLayoutConfig::force_directed()
     };
@@ -213,7 +217,7 @@ fn main() {
     let mut rest = args.iter();
     while let Some(arg) = rest.next() {
         match arg.as_str() {
-            "--fast" => {}
+            "--fast" | "--default" => {}
             "--spring-forces" => config.spring_model = graph_canvas_layout::SpringModel::Forces,
             "--disks" => config.contact_model = graph_canvas_layout::ContactModel::Disks,
             "--starts" => {

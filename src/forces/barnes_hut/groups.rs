@@ -29,8 +29,8 @@ impl ManyBody {
     /// holding a member and leaves never are. So the pass opens at least the cells
     /// `force_on` opens and its mean error is no larger (on `n10000_e25000` at theta 0.9,
     /// 0.59 % against 0.83 %; single points can land either side), theta 0 is still the
-    /// exact sum, and on `n10000_e25000` at theta 0.9 a build and a pass take 2.1 ms
-    /// against 5.1 ms for a walk per point (the build aside).
+    /// exact sum, and on `n10000_e25000` at theta 0.9 a build and a pass take 1.9 ms
+    /// (README).
     ///
     /// # Example
     /// ```

@@ -5,9 +5,10 @@
 //! (the graph is still in motion then) and restart from a fresh, warmed layout every 240
 //! timed frames, so every sample measures the same kind of state: the mean frame of whole
 //! windows, however few calls criterion asks for. `asleep` benchmarks
-//! time a layout that `is_converged`. The `huge` group times the first 60 frames of a
-//! 100,000-node graph, the world's first build included: what a host waits through when
-//! such a graph opens (`cargo bench --bench step -- random_n100000`).
+//! time a layout that `is_converged`. The `very_big` group times the first 60 frames of
+//! a 100,000-node graph, the world's first build included: what a host waits through
+//! when such a graph opens (about two minutes; alone: `cargo bench --bench step --
+//! random_n100000`).
 
 mod common;
 

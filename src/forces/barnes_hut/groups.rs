@@ -56,7 +56,7 @@ impl ManyBody {
     ) {
         out.clear();
         out.resize(self.points.len(), Vector2D::zero());
-        if self.nodes.is_empty() || self.nodes[0].charge <= 0.0 {
+        if self.nodes.is_empty() || self.nodes[0].count == 0 {
             return;
         }
         let query = Query::new(strength, theta, min_distance);
@@ -68,7 +68,7 @@ impl ManyBody {
         stack.push(0);
         while let Some(g) = stack.pop() {
             let node = self.nodes[g as usize];
-            if node.charge > GROUP_SIZE as f32 && node.children != NONE {
+            if node.count as usize > GROUP_SIZE && node.children != NONE {
                 stack.extend(self.occupied_children(node.children).rev());
                 continue;
             }
@@ -129,12 +129,12 @@ impl GroupLists {
             }
             // A cell holding a member is always opened: taking it whole would count the
             // member's own charge.
-            let holds = node.first < end && first < node.first + node.charge as u32;
+            let holds = node.first < end && first < node.first + node.count;
             if !holds {
                 let dx = (lo.x - node.mx).max(node.mx - hi.x).max(0.0);
                 let dy = (lo.y - node.my).max(node.my - hi.y).max(0.0);
                 if node.width_sq < query.theta_sq * (dx * dx + dy * dy) {
-                    self.push(Point2D::new(node.mx, node.my), node.charge);
+                    self.push(Point2D::new(node.mx, node.my), node.charge());
                     continue;
                 }
             }
@@ -168,8 +168,9 @@ impl GroupLists {
         let entries = self.x.iter().zip(&self.y).zip(&self.charge);
         let terms = terms_x.iter_mut().zip(terms_y.iter_mut());
         for (((x, y), charge), (tx, ty)) in entries.zip(terms) {
-            // Branch-free. The point itself (and any coincident one) adds nothing: its
-            // offset is zero and `soft` is positive.
+            // Branch-free (selects). The point itself and any coincident one add
+            // nothing, nor one so close that its squared distance underflows to zero
+            // (as in `force_on`): its offset would be divided by the smallest softening.
             let (dx, dy) = (p.x - x, p.y - y);
             let d_sq = dx * dx + dy * dy;
             let soft = if d_sq > query.min_sq {
@@ -177,7 +178,7 @@ impl GroupLists {
             } else {
                 query.min_sq
             };
-            let s = charge / soft;
+            let s = if d_sq > 0.0 { charge / soft } else { 0.0 };
             (*tx, *ty) = (dx * s, dy * s);
         }
         let (mut fx, mut fy) = ([0.0_f32; LANES], [0.0_f32; LANES]);

@@ -39,35 +39,14 @@ fn z_order(x: f32, y: f32) -> u64 {
 /// below f32 resolution anyway).
 const MAX_DEPTH: u32 = 24;
 
-/// A square of the tree while it is built.
-#[derive(Clone, Copy, Debug)]
-struct Cell {
-    /// Centre and half width of the square.
-    cx: f32,
-    cy: f32,
-    half: f32,
-    /// First child (4 consecutive cells) or `NONE` for a leaf.
-    children: u32,
-}
-
-impl Cell {
-    fn new(cx: f32, cy: f32, half: f32) -> Self {
-        Self {
-            cx,
-            cy,
-            half,
-            children: NONE,
-        }
-    }
-}
-
-/// What a force query reads of a cell, packed into 24 bytes (same index as [`Cell`]).
+/// What a force query reads of a cell, packed into 24 bytes.
 #[derive(Clone, Copy, Debug, Default)]
 struct Node {
-    /// Charge-weighted centre and total charge (the number of points under the cell).
+    /// Charge-weighted centre.
     mx: f32,
     my: f32,
-    charge: f32,
+    /// The number of points under the cell: its charge.
+    count: u32,
     /// Squared width of the square: the cell counts as one body when
     /// `width_sq < theta² × d²`.
     width_sq: f32,
@@ -80,7 +59,12 @@ impl Node {
     /// The cell's points, as positions in the tree order.
     fn points(&self) -> std::ops::Range<usize> {
         let first = self.first as usize;
-        first..first + self.charge as usize
+        first..first + self.count as usize
+    }
+
+    /// The cell's total charge: one per point.
+    fn charge(&self) -> f32 {
+        self.count as f32
     }
 }
 
@@ -102,8 +86,9 @@ impl Node {
 /// ```
 #[derive(Clone, Debug, Default)]
 pub struct ManyBody {
-    cells: Vec<Cell>,
     nodes: Vec<Node>,
+    /// Each cell's half width (same index as `nodes`), while the tree is built.
+    halves: Vec<f32>,
     /// The given points, by their index.
     points: Vec<Point2D<f32>>,
     /// The finite points in tree order, and the index each was given at.
@@ -120,12 +105,12 @@ pub struct ManyBody {
 impl ManyBody {
     /// Builds the tree over `points` (non-finite points are left out). O(n log n).
     ///
-    /// A cell is split into four while it holds two points or more, down to
-    /// [`MAX_DEPTH`]. The points are sorted once by their place on a Z-order curve over
+    /// A cell is split into four while it holds two points or more, down to depth 24
+    /// (deeper, points are closer than f32 resolves anyway). The points are sorted once by their place on a Z-order curve over
     /// the root square (the quadrant at every depth, 24 bits each way), so every cell's
     /// points are one run of the order and its quadrants four runs of it.
     pub fn build(&mut self, points: &[Point2D<f32>]) {
-        self.cells.clear();
+        self.halves.clear();
         self.nodes.clear();
         let same_points = points.len() == self.points.len();
         self.points.clear();
@@ -142,21 +127,21 @@ impl ManyBody {
             return;
         };
         let half = ((hi.x - lo.x).max(hi.y - lo.y) * 0.5).max(1.0) * 1.0001;
-        let root = Cell::new((lo.x + hi.x) * 0.5, (lo.y + hi.y) * 0.5, half);
-        self.cells.push(root);
+        self.halves.push(half);
         self.nodes.push(Node {
             children: NONE,
             ..Node::default()
         });
-        let (x0, y0, side) = (root.cx - half, root.cy - half, 2.0 * half);
+        let (cx, cy) = ((lo.x + hi.x) * 0.5, (lo.y + hi.y) * 0.5);
+        let (x0, y0, side) = (cx - half, cy - half, 2.0 * half);
         let points = &self.points;
         for entry in &mut self.entries {
             let p = points[entry.1 as usize];
             entry.0 = z_order((p.x - x0) / side, (p.y - y0) / side);
         }
-        // Stable and adaptive: the last build's order is nearly this one. Codes are
-        // ties only within a deepest leaf, whose points then keep their index order.
-        self.entries.sort_by_key(|&(code, _)| code);
+        // Adaptive: the last build's order is nearly this one. Codes tie only within a
+        // deepest leaf, whose points then go in index order, whatever the last order.
+        self.entries.sort();
         self.index.extend(self.entries.iter().map(|e| e.1));
         self.sorted
             .extend(self.index.iter().map(|&i| points[i as usize]));
@@ -196,7 +181,7 @@ impl ManyBody {
         work.push((0_u32, 0_u32, self.entries.len() as u32, 0_u32));
         while let Some((c, first, count, depth)) = work.pop() {
             self.nodes[c as usize].first = first;
-            self.nodes[c as usize].charge = count as f32;
+            self.nodes[c as usize].count = count;
             if count < 2 || depth >= MAX_DEPTH {
                 continue;
             }
@@ -207,15 +192,11 @@ impl ManyBody {
             for (q, start) in (1_u32..).zip(&mut starts[1..4]) {
                 *start = run.partition_point(|e| quadrant(e) < q) as u32;
             }
-            let cell = self.cells[c as usize];
-            let children = self.cells.len() as u32;
-            self.cells[c as usize].children = children;
+            let children = self.nodes.len() as u32;
             self.nodes[c as usize].children = children;
-            let h = cell.half * 0.5;
-            for k in 0..4_u32 {
-                let cx = if k & 1 == 1 { cell.cx + h } else { cell.cx - h };
-                let cy = if k & 2 == 2 { cell.cy + h } else { cell.cy - h };
-                self.cells.push(Cell::new(cx, cy, h));
+            let h = self.halves[c as usize] * 0.5;
+            for _ in 0..4 {
+                self.halves.push(h);
                 self.nodes.push(Node {
                     children: NONE,
                     ..Node::default()
@@ -233,7 +214,7 @@ impl ManyBody {
     /// Centres and widths, bottom up: children are created after their parents, so a
     /// reverse sweep sums each cell after its children.
     fn sum_charges(&mut self) {
-        for c in (0..self.cells.len()).rev() {
+        for c in (0..self.nodes.len()).rev() {
             let (mut mx, mut my) = (0.0_f32, 0.0_f32);
             let node = self.nodes[c];
             if node.children == NONE {
@@ -244,12 +225,12 @@ impl ManyBody {
             } else {
                 for k in 0..4 {
                     let child = self.nodes[(node.children + k) as usize];
-                    mx += child.mx * child.charge;
-                    my += child.my * child.charge;
+                    mx += child.mx * child.charge();
+                    my += child.my * child.charge();
                 }
             }
-            let q = node.charge;
-            let width = 2.0 * self.cells[c].half;
+            let q = node.charge();
+            let width = 2.0 * self.halves[c];
             let node = &mut self.nodes[c];
             (node.mx, node.my) = if q > 0.0 {
                 (mx / q, my / q)
@@ -287,7 +268,7 @@ impl ManyBody {
             return f;
         }
         stack.clear();
-        if self.nodes[0].charge > 0.0 {
+        if self.nodes[0].count > 0 {
             stack.push(0);
         }
         while let Some(c) = stack.pop() {
@@ -297,7 +278,7 @@ impl ManyBody {
             let d_sq = dx * dx + dy * dy;
             if node.children != NONE {
                 if node.width_sq < query.theta_sq * d_sq {
-                    let s = query.strength * node.charge / d_sq.max(query.min_sq);
+                    let s = query.strength * node.charge() / d_sq.max(query.min_sq);
                     f += Vector2D::new(dx, dy) * s;
                 } else {
                     stack.extend(self.occupied_children(node.children));
@@ -321,7 +302,7 @@ impl ManyBody {
     /// The children (first at `children`) that hold a point: empty quadrants add
     /// nothing and are never visited.
     fn occupied_children(&self, children: u32) -> impl DoubleEndedIterator<Item = u32> + '_ {
-        (children..children + 4).filter(move |&k| self.nodes[k as usize].charge > 0.0)
+        (children..children + 4).filter(move |&k| self.nodes[k as usize].count > 0)
     }
 }
 

@@ -195,11 +195,8 @@ impl Collide {
             self.velocity[l] = Vector2D::new(v.x, v.y);
             self.before[l] = self.velocity[l];
         }
-        for l in 0..n {
-            if self.order[l] as usize >= slots {
-                self.read[l] = false;
-            }
-        }
+        // The world's bodies do not change between `resolve` and here.
+        debug_assert!(self.order.iter().all(|&s| (s as usize) < slots));
         for pair in &mut self.pairs {
             let (a, b) = (pair.a as usize, pair.b as usize);
             if self.read[a] && self.read[b] {

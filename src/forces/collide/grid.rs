@@ -69,6 +69,12 @@ impl Grid {
         self.cells.iter().map(|&(_, s)| s)
     }
 
+    /// The motion a cell allows (that of nine bodies in ten, up to a disk's width), from
+    /// the last [`sort`](Self::sort).
+    pub(super) fn usual_motion(&self) -> f32 {
+        self.usual
+    }
+
     /// Calls `pair(a, b, false)` for every two bodies in neighbouring cells, by their
     /// place `a < b` in the grid's order (the order of [`sort`](Self::sort), which
     /// `points` and `motion` follow), once each and in order (by `a`, then `b`); then
@@ -81,12 +87,14 @@ impl Grid {
     /// the path crosses more rows than there are bodies) for the slower ones; two fast
     /// bodies may cross paths far from where either starts, so their swept boxes are
     /// compared directly, sorted along x.
+    ///
+    /// `pair` returns whether to go on: the search stops at the first `false`.
     pub(super) fn pairs(
         &mut self,
         points: &[Point2D<f32>],
         radius: &[f32],
         motion: &[Vector2D<f32>],
-        mut pair: impl FnMut(u32, u32, bool),
+        mut pair: impl FnMut(u32, u32, bool) -> bool,
     ) {
         let cells = &self.cells;
         // The cells of the next row start at or after `below`: keys only grow.
@@ -97,7 +105,9 @@ impl Grid {
                 if k2 > k + 1 {
                     break;
                 }
-                pair(i as u32, j as u32, false);
+                if !pair(i as u32, j as u32, false) {
+                    return;
+                }
             }
             // The three cells of the next row.
             let first = k + (1 << 32) - 1;
@@ -108,7 +118,9 @@ impl Grid {
                 if k2 > first + 2 {
                     break;
                 }
-                pair(i as u32, j as u32, false);
+                if !pair(i as u32, j as u32, false) {
+                    return;
+                }
             }
         }
         // Bodies moving further than the cells allow search along their path, beyond
@@ -127,14 +139,16 @@ impl Grid {
             }
             let (from, to) = (p, p + m);
             let (lo, hi) = (from.min(to), from.max(to));
-            let r = radius[a];
+            // Padded by the radius and half the usual motion: two fast bodies whose
+            // paths come within their radii and the usual motion overlap.
+            let r = radius[a] + 0.5 * usual;
             self.swept
                 .push((lo.x - r, hi.x + r, lo.y - r, hi.y + r, a as u32));
             let (row_a, column_a) = row_and_column(cells[a].0);
+            // Whether to go on (the neighbouring cells' pairs came above).
             let mut found = |b: usize, row: i64, column: i64| {
-                if (row - row_a).abs() > 1 || (column - column_a).abs() > 1 {
-                    pair(a.min(b) as u32, a.max(b) as u32, true);
-                }
+                let neighbour = (row - row_a).abs() <= 1 && (column - column_a).abs() <= 1;
+                neighbour || pair(a.min(b) as u32, a.max(b) as u32, true)
             };
             let (top, bottom) = (index(lo.y - reach, cell), index(hi.y + reach, cell));
             let (left, right) = (index(lo.x - reach, cell), index(hi.x + reach, cell));
@@ -144,20 +158,38 @@ impl Grid {
                 // every row.
                 for (b, &(k, _)) in cells.iter().enumerate() {
                     let (row, column) = row_and_column(k);
-                    if (top..=bottom).contains(&row) && (left..=right).contains(&column) {
-                        found(b, row, column);
+                    if (top..=bottom).contains(&row)
+                        && (left..=right).contains(&column)
+                        && !found(b, row, column)
+                    {
+                        return;
                     }
                 }
                 continue;
             }
             for y in top..=bottom {
-                let (start, end) = (key(left, y), key(right, y));
+                // Only the columns the path passes near in this row: a long diagonal
+                // path's bounding box holds far more cells than the path. (A cell more
+                // on every side, for the rounding of far coordinates.)
+                let (row_top, cell64) = (y as f64 * f64::from(cell), f64::from(cell));
+                let band = (
+                    (row_top - cell64) as f32 - reach,
+                    (row_top + 2.0 * cell64) as f32 + reach,
+                );
+                let Some((x0, x1)) = crossing(from, to, band) else {
+                    continue;
+                };
+                let near_left = (index(x0 - reach, cell) - 1).max(left);
+                let near_right = (index(x1 + reach, cell) + 1).min(right);
+                let (start, end) = (key(near_left, y), key(near_right, y));
                 let first = cells.partition_point(|&(k, _)| k < start);
                 for (b, &(k2, _)) in cells.iter().enumerate().skip(first) {
                     if k2 > end {
                         break;
                     }
-                    found(b, y, row_and_column(k2).1);
+                    if !found(b, y, row_and_column(k2).1) {
+                        return;
+                    }
                 }
             }
         }
@@ -169,12 +201,36 @@ impl Grid {
                     break;
                 }
                 let (a, b) = (a as usize, b as usize);
-                if top_b <= bottom && top <= bottom_b && !near(a, b) {
-                    pair(a.min(b) as u32, a.max(b) as u32, true);
+                if top_b <= bottom
+                    && top <= bottom_b
+                    && !near(a, b)
+                    && !pair(a.min(b) as u32, a.max(b) as u32, true)
+                {
+                    return;
                 }
             }
         }
     }
+}
+
+/// The x-extent of the part of the segment `from`–`to` whose y lies in `band` (low,
+/// high), or `None` where the segment does not reach the band.
+fn crossing(from: Point2D<f32>, to: Point2D<f32>, (low, high): (f32, f32)) -> Option<(f32, f32)> {
+    let dy = to.y - from.y;
+    let (t0, t1) = if dy == 0.0 {
+        if from.y < low || from.y > high {
+            return None;
+        }
+        (0.0, 1.0)
+    } else {
+        let (a, b) = ((low - from.y) / dy, (high - from.y) / dy);
+        (a.min(b).max(0.0), a.max(b).min(1.0))
+    };
+    if t0 > t1 {
+        return None;
+    }
+    let (xa, xb) = (from.x + (to.x - from.x) * t0, from.x + (to.x - from.x) * t1);
+    Some((xa.min(xb), xa.max(xb)))
 }
 
 /// The row and column of a cell's key.

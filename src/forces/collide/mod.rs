@@ -14,6 +14,11 @@
 //!    push left in the velocities, so parted disks stop instead of flying apart, and a
 //!    contact pressed by a steady force holds still.
 //!
+//! The pairs are those within their relative motion of touching, and, for two bodies
+//! moving fast relative to each other, only those whose paths come close; a substep
+//! keeps at most 32 pairs a body (`pairs.rs`), so a crowd far denser than disks can be
+//! costs bounded memory and time.
+//!
 //! Impulses only push (they stay at or above zero). Kinematic, fixed and sleeping bodies
 //! do not give way; a sleeping body that an awake or driven one presses into wakes and
 //! gives way from then on.

@@ -75,8 +75,8 @@ pub struct Cooling {
     /// mean edge near 7 times its rest length) is pulled together by its long springs
     /// as the layout cools, tighter than contacts can hold it. With the other
     /// [`force_directed`](crate::RapierLayoutConfig::force_directed) settings, 2 takes
-    /// `n10000_e25000` from 4,453 overlapping pairs at rest to 22 and its 95th-percentile
-    /// step from 20.7 to 16.3 ms (one session), for an edge-length CV of 0.50 against
+    /// `n10000_e25000` from 5,165 overlapping pairs at rest to 69 and its 95th-percentile
+    /// step from 31.5 to 19.6 ms (one session), for an edge-length CV of 0.50 against
     /// 0.49 (d3-force: 0.50); `n1000_e2500` rests without overlaps either way. The six small shipped
     /// graphs stay below the limit (their CVs move in the third decimal at most). Costs one length per
     /// spring and a median at each re-tune. Has no effect at `spring_exponent` 1. Values

@@ -38,8 +38,8 @@ impl RapierLayoutConfig {
     ///   median length is over twice their rest length ([`Cooling::stretch_limit`] 2;
     ///   fully like the heat from four times, blended in between): such a graph cannot
     ///   reach its rest lengths, and springs that outlast repulsion would only pack it
-    ///   into overlaps (4,453 overlapping pairs at rest on `n10000_e25000` without the
-    ///   limit, 22 with it);
+    ///   into overlaps (5,165 overlapping pairs at rest on `n10000_e25000` without the
+    ///   limit, 69 with it);
     /// - collide at the node radius: the layout's own disk separation
     ///   ([`ContactModel::Disks`]: soft contacts on a uniform grid, firm at 240 Hz, ζ = 1,
     ///   [`ContactSoftness`]) instead of rapier's pair bookkeeping, and the overlaps
@@ -65,9 +65,10 @@ impl RapierLayoutConfig {
     /// Every shipped graph comes to rest (every body asleep, or halted at the end of the
     /// schedule) within 300 frames of the last disturbance, with no overlapping pair on
     /// the graphs of up to 1,000 nodes (README: edge-length spread, frames and step
-    /// times beside d3-force's). On `n10000_e25000` a step takes 13 ms at the median and
-    /// 17 ms at the 95th percentile, an eighth of d3-force's tick in the same session;
-    /// [`force_directed_fast`](Self::force_directed_fast) takes 5 ms without collisions.
+    /// times beside d3-force's). On `n10000_e25000` a step takes 14 ms at the median and
+    /// 19 ms at the 95th percentile, under a tenth of d3-force's tick in the same
+    /// session; [`force_directed_fast`](Self::force_directed_fast) takes 9 ms without
+    /// collisions.
     ///
     /// # Example
     /// ```
@@ -121,9 +122,9 @@ impl RapierLayoutConfig {
     /// Repulsion alone keeps nodes apart, so some overlap where springs pull hard (824
     /// pairs on `n1000_e2500`; d3-force leaves 347); the stiffer hub springs and the
     /// bias of `force_directed()` would press twice as many together without contacts.
-    /// In exchange there is no pair search: measured on `n10000_e25000` (README), 5.4 ms
-    /// per step at the median and 7.5 ms at the 95th percentile, where
-    /// `force_directed()` takes 13.1 and 16.6 ms. Its springs, fading with the heat,
+    /// In exchange there is no pair search: measured on `n10000_e25000` (README), 9.4 ms
+    /// per step at the median and 10.9 ms at the 95th percentile, where
+    /// `force_directed()` takes 13.9 and 19.5 ms in the same session. Its springs, fading with the heat,
     /// are weak once the layout rests, so a thrown node's springs pull with 5 % of their
     /// strength ([`Cooling::coasting_spring_scale`]) to bring it back.
     ///

@@ -182,9 +182,9 @@ pub enum ContactModel {
     /// world, the overlaps still held are projected apart on positions first. No
     /// colliders exist in rapier, so its broad and narrow phases have nothing to do:
     /// with the other [`force_directed`](crate::RapierLayoutConfig::force_directed)
-    /// settings, `n10000_e25000` steps in 10.3 ms at the median and 14.0 at the 95th
-    /// percentile, against 38.3 and 64.0 ms with rapier's contacts (one session), and
-    /// rests with 22 overlapping pairs against 89. The trade: disks only (a node's bounding circle),
+    /// settings, `n10000_e25000` steps in 17.0 ms at the median and 19.6 at the 95th
+    /// percentile, against 49.3 and 62.4 ms with rapier's contacts (one session), and
+    /// rests with 69 overlapping pairs against 89. The trade: disks only (a node's bounding circle),
     /// no friction, restitution or contact events (with
     /// [`RapierLayoutConfig::contact_events`](crate::RapierLayoutConfig::contact_events)
     /// on, contacts are rapier's), and contacts are not solved together with rapier

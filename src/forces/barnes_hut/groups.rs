@@ -63,7 +63,6 @@ impl ManyBody {
         let mut lists = std::mem::take(&mut self.lists);
         let mut stack = std::mem::take(&mut self.stack);
         // The groups: the largest cells holding at most GROUP_SIZE points, depth first.
-
         stack.clear();
         stack.push(0);
         while let Some(g) = stack.pop() {

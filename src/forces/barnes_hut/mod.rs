@@ -51,7 +51,7 @@ struct Node {
     /// `width_sq < theta² × d²`.
     width_sq: f32,
     children: u32,
-    /// The cell's points are `charge` consecutive entries of the tree order from here.
+    /// The cell's points are `count` consecutive entries of the tree order from here.
     first: u32,
 }
 
@@ -60,6 +60,16 @@ impl Node {
     fn points(&self) -> std::ops::Range<usize> {
         let first = self.first as usize;
         first..first + self.count as usize
+    }
+
+    /// A leaf of half width `half`, its points and centre of charge to be filled in.
+    fn square(half: f32) -> Self {
+        let width = 2.0 * half;
+        Self {
+            width_sq: width * width,
+            children: NONE,
+            ..Self::default()
+        }
     }
 
     /// The cell's total charge: one per point.
@@ -87,8 +97,6 @@ impl Node {
 #[derive(Clone, Debug, Default)]
 pub struct ManyBody {
     nodes: Vec<Node>,
-    /// Each cell's half width (same index as `nodes`), while the tree is built.
-    halves: Vec<f32>,
     /// The given points, by their index.
     points: Vec<Point2D<f32>>,
     /// The finite points in tree order, and the index each was given at.
@@ -96,8 +104,8 @@ pub struct ManyBody {
     index: Vec<u32>,
     /// Every finite point's Z-order code and index, sorted.
     entries: Vec<(u64, u32)>,
-    /// The cells still to split.
-    work: Vec<(u32, u32, u32, u32)>,
+    /// The cells still to split: (cell, first entry, entries, depth, half width).
+    work: Vec<(u32, u32, u32, u32, f32)>,
     stack: Vec<u32>,
     lists: GroupLists,
 }
@@ -106,11 +114,11 @@ impl ManyBody {
     /// Builds the tree over `points` (non-finite points are left out). O(n log n).
     ///
     /// A cell is split into four while it holds two points or more, down to depth 24
-    /// (deeper, points are closer than f32 resolves anyway). The points are sorted once by their place on a Z-order curve over
-    /// the root square (the quadrant at every depth, 24 bits each way), so every cell's
-    /// points are one run of the order and its quadrants four runs of it.
+    /// (deeper, points are closer than f32 resolves anyway). The points are sorted once
+    /// by their place on a Z-order curve over the root square (the quadrant at every
+    /// depth, 24 bits each way), so every cell's points are one run of the order and its
+    /// quadrants four runs of it.
     pub fn build(&mut self, points: &[Point2D<f32>]) {
-        self.halves.clear();
         self.nodes.clear();
         let same_points = points.len() == self.points.len();
         self.points.clear();
@@ -127,11 +135,7 @@ impl ManyBody {
             return;
         };
         let half = ((hi.x - lo.x).max(hi.y - lo.y) * 0.5).max(1.0) * 1.0001;
-        self.halves.push(half);
-        self.nodes.push(Node {
-            children: NONE,
-            ..Node::default()
-        });
+        self.nodes.push(Node::square(half));
         let (cx, cy) = ((lo.x + hi.x) * 0.5, (lo.y + hi.y) * 0.5);
         let (x0, y0, side) = (cx - half, cy - half, 2.0 * half);
         let points = &self.points;
@@ -145,26 +149,28 @@ impl ManyBody {
         self.index.extend(self.entries.iter().map(|e| e.1));
         self.sorted
             .extend(self.index.iter().map(|&i| points[i as usize]));
-        self.split();
+        self.split(half);
         self.sum_charges();
     }
 
-    /// The finite points' indices (codes to be filled in), in the last build's tree
-    /// order when the same points are still finite, else in index order. The tree does
-    /// not depend on which.
+    /// The finite points' indices (codes to be filled in): the last build's entries, in
+    /// its tree order, when the same points are still finite (the sort below then finds
+    /// them nearly sorted), else in index order. The tree does not depend on which.
     fn gather_entries(&mut self, same_points: bool) {
         let finite = |p: &Point2D<f32>| p.x.is_finite() && p.y.is_finite();
-        self.entries.clear();
-        if same_points && self.points.iter().filter(|p| finite(p)).count() == self.index.len() {
-            let points = &self.points;
-            if self.index.iter().all(|&i| finite(&points[i as usize])) {
-                // A deepest leaf's points in index order, as a fresh build has them.
-                self.entries.extend(self.index.iter().map(|&i| (0, i)));
-                return;
-            }
+        let points = &self.points;
+        if same_points
+            && points.iter().filter(|p| finite(p)).count() == self.entries.len()
+            && self
+                .entries
+                .iter()
+                .all(|&(_, i)| finite(&points[i as usize]))
+        {
+            return;
         }
+        self.entries.clear();
         self.entries.extend(
-            self.points
+            points
                 .iter()
                 .enumerate()
                 .filter(|(_, p)| finite(p))
@@ -172,14 +178,14 @@ impl ManyBody {
         );
     }
 
-    /// Splits the root and its descendants, depth first: a cell's quadrants are the four
-    /// runs of its points by the code's two bits at its depth; their cells go at the end.
-    fn split(&mut self) {
-        // (cell, first entry, entries, depth)
+    /// Splits the root (of half width `half`) and its descendants, depth first: a cell's
+    /// quadrants are the four runs of its points by the code's two bits at its depth;
+    /// their cells go at the end.
+    fn split(&mut self, half: f32) {
         let mut work = std::mem::take(&mut self.work);
         work.clear();
-        work.push((0_u32, 0_u32, self.entries.len() as u32, 0_u32));
-        while let Some((c, first, count, depth)) = work.pop() {
+        work.push((0_u32, 0_u32, self.entries.len() as u32, 0_u32, half));
+        while let Some((c, first, count, depth, half)) = work.pop() {
             self.nodes[c as usize].first = first;
             self.nodes[c as usize].count = count;
             if count < 2 || depth >= MAX_DEPTH {
@@ -194,24 +200,24 @@ impl ManyBody {
             }
             let children = self.nodes.len() as u32;
             self.nodes[c as usize].children = children;
-            let h = self.halves[c as usize] * 0.5;
-            for _ in 0..4 {
-                self.halves.push(h);
-                self.nodes.push(Node {
-                    children: NONE,
-                    ..Node::default()
-                });
-            }
+            let h = half * 0.5;
+            self.nodes.extend([Node::square(h); 4]);
             // The first quadrant on top of the stack: its cells follow its parent's.
             for k in (0..4).rev() {
                 let (start, end) = (starts[k], starts[k + 1]);
-                work.push((children + k as u32, first + start, end - start, depth + 1));
+                work.push((
+                    children + k as u32,
+                    first + start,
+                    end - start,
+                    depth + 1,
+                    h,
+                ));
             }
         }
         self.work = work;
     }
 
-    /// Centres and widths, bottom up: children are created after their parents, so a
+    /// Centres of charge, bottom up: children are created after their parents, so a
     /// reverse sweep sums each cell after its children.
     fn sum_charges(&mut self) {
         for c in (0..self.nodes.len()).rev() {
@@ -230,14 +236,12 @@ impl ManyBody {
                 }
             }
             let q = node.charge();
-            let width = 2.0 * self.halves[c];
             let node = &mut self.nodes[c];
             (node.mx, node.my) = if q > 0.0 {
                 (mx / q, my / q)
             } else {
                 (0.0, 0.0)
             };
-            node.width_sq = width * width;
         }
     }
 

@@ -144,12 +144,8 @@ impl Grid {
             let r = radius[a] + 0.5 * usual;
             self.swept
                 .push((lo.x - r, hi.x + r, lo.y - r, hi.y + r, a as u32));
-            let (row_a, column_a) = row_and_column(cells[a].0);
             // Whether to go on (the neighbouring cells' pairs came above).
-            let mut found = |b: usize, row: i64, column: i64| {
-                let neighbour = (row - row_a).abs() <= 1 && (column - column_a).abs() <= 1;
-                neighbour || pair(a.min(b) as u32, a.max(b) as u32, true)
-            };
+            let mut found = |b: usize| near(a, b) || pair(a.min(b) as u32, a.max(b) as u32, true);
             let (top, bottom) = (index(lo.y - reach, cell), index(hi.y + reach, cell));
             let (left, right) = (index(lo.x - reach, cell), index(hi.x + reach, cell));
             if (bottom - top) as usize >= cells.len() {
@@ -160,7 +156,7 @@ impl Grid {
                     let (row, column) = row_and_column(k);
                     if (top..=bottom).contains(&row)
                         && (left..=right).contains(&column)
-                        && !found(b, row, column)
+                        && !found(b)
                     {
                         return;
                     }
@@ -187,7 +183,7 @@ impl Grid {
                     if k2 > end {
                         break;
                     }
-                    if !found(b, y, row_and_column(k2).1) {
+                    if !found(b) {
                         return;
                     }
                 }

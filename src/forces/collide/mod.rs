@@ -66,6 +66,19 @@ fn coincident_normal(a: u32, b: u32) -> Vector2D<f32> {
     Vector2D::new(angle.cos(), angle.sin())
 }
 
+/// The bodies in pairs, as (world slot, local index), in slot order: `local` by slot,
+/// `in_pair` by local index.
+fn in_pairs<'a>(
+    local: &'a [u32],
+    in_pair: &'a [bool],
+) -> impl Iterator<Item = (usize, usize)> + 'a {
+    local
+        .iter()
+        .enumerate()
+        .filter(move |&(_, &l)| l != NONE && in_pair[l as usize])
+        .map(|(s, &l)| (s, l as usize))
+}
+
 /// The soft-constraint coefficients of one substep (Box2D v3's `b2Softness`).
 #[derive(Clone, Copy, Debug)]
 struct Softness {
@@ -189,11 +202,7 @@ impl Collide {
             self.read[pair.a as usize] = true;
             self.read[pair.b as usize] = true;
         }
-        for (s, &l) in self.local.iter().enumerate().take(slots) {
-            let l = l as usize;
-            if l == NONE as usize || !self.read[l] {
-                continue;
-            }
+        for (s, l) in in_pairs(&self.local[..slots.min(self.local.len())], &self.read) {
             let body = world.body_at(s);
             let (t, v) = (body.translation(), body.linvel());
             self.points[l] = Point2D::new(t.x, t.y);
@@ -202,23 +211,18 @@ impl Collide {
         }
         // The world's bodies do not change between `resolve` and here.
         debug_assert!(self.order.iter().all(|&s| (s as usize) < slots));
+        // Every body in a pair was read.
         for pair in &mut self.pairs {
             let (a, b) = (pair.a as usize, pair.b as usize);
-            if self.read[a] && self.read[b] {
-                let reach = self.radius[a] + self.radius[b];
-                pair.separation = (self.points[b] - self.points[a]).length() - reach;
-            }
+            let reach = self.radius[a] + self.radius[b];
+            pair.separation = (self.points[b] - self.points[a]).length() - reach;
         }
         for _ in 0..RELAX_PASSES {
             if self.pass(world, None, 1.0 / dt) < SETTLED_CHANGE {
                 break;
             }
         }
-        for (s, &l) in self.local.iter().enumerate().take(slots) {
-            let l = l as usize;
-            if l == NONE as usize || !self.read[l] {
-                continue;
-            }
+        for (s, l) in in_pairs(&self.local[..slots.min(self.local.len())], &self.read) {
             let change = self.velocity[l] - self.before[l];
             if change == Vector2D::zero() {
                 continue;
@@ -345,6 +349,7 @@ impl Collide {
     /// NOTE: written without branches on the pair's values (selects instead): whether a
     /// pair touches, pushes or holds is all but random from one pair to the next, and a
     /// mispredicted branch a pair cost more than its arithmetic (a third of a pass).
+    /// [`push`](Self::push) branches only on whether both bodies hold, which is rare.
     #[inline(always)]
     fn solve_pair<N: Clone + Eq + Hash, const PUSH: bool>(
         &mut self,
@@ -355,7 +360,7 @@ impl Collide {
         sleepers: bool,
         woke: &mut bool,
     ) -> f32 {
-        let mut pair = self.pairs[k];
+        let pair = self.pairs[k];
         let impulse = self.impulses[k];
         let (a, b) = (pair.a as usize, pair.b as usize);
         let closing = (self.velocity[b] - self.velocity[a]).dot(pair.normal);
@@ -372,32 +377,20 @@ impl Collide {
         if sleepers && wanted > 0.0 && (self.sleeping[a] || self.sleeping[b]) {
             let neither = pair.share_a + pair.share_b == 0.0;
             if wanted > WAKE_SPEED || neither || s < -SLEEPING_OVERLAP {
-                pair = self.wake_pair(world, k);
+                self.wake_pair(world, k);
                 *woke = true;
             }
         }
         let change = wanted.max(-impulse);
-        // A pair whose bodies both hold keeps no impulse; a change of 0 changes nothing.
-        let given = if pair.share_a + pair.share_b != 0.0 {
-            change
-        } else {
-            0.0
-        };
-        self.impulses[k] = impulse + given;
-        self.velocity[a] -= pair.normal * (given * pair.share_a);
-        self.velocity[b] += pair.normal * (given * pair.share_b);
+        self.push(k, change);
         change
     }
 
     /// A sleeping body of pair `k` pushed into, or overlapped, wakes and gives way (one
     /// that an awake body only rests against, more slowly than a body falls asleep,
-    /// stays asleep). Returns the pair with its new shares.
+    /// stays asleep), and the pair's shares follow.
     #[cold]
-    fn wake_pair<N: Clone + Eq + Hash>(
-        &mut self,
-        world: &mut RapierSceneWorld<N>,
-        k: usize,
-    ) -> Pair {
+    fn wake_pair<N: Clone + Eq + Hash>(&mut self, world: &mut RapierSceneWorld<N>, k: usize) {
         let pair = self.pairs[k];
         for l in [pair.a as usize, pair.b as usize] {
             if self.sleeping[l] {
@@ -408,7 +401,6 @@ impl Collide {
             }
         }
         self.share_pair(k);
-        self.pairs[k]
     }
 
     /// Pair `k`'s shares, after one of its bodies woke.

@@ -65,9 +65,9 @@ impl RapierLayoutConfig {
     /// Every shipped graph comes to rest (every body asleep, or halted at the end of the
     /// schedule) within 300 frames of the last disturbance, with no overlapping pair on
     /// the graphs of up to 1,000 nodes (README: edge-length spread, frames and step
-    /// times beside d3-force's). On `n10000_e25000` a step takes 14 ms at the median and
-    /// 19 ms at the 95th percentile, under a tenth of d3-force's tick in the same
-    /// session; [`force_directed_fast`](Self::force_directed_fast) takes 9 ms without
+    /// times beside d3-force's). On `n10000_e25000` a step takes 10.5 ms at the median
+    /// and 14.4 ms at the 95th percentile, about a tenth of d3-force's tick in the same
+    /// session; [`force_directed_fast`](Self::force_directed_fast) takes 5.8 ms without
     /// collisions.
     ///
     /// # Example
@@ -119,13 +119,13 @@ impl RapierLayoutConfig {
     /// [`force_directed`](Self::force_directed) without collisions, with d3's full
     /// degree share (spring exponent 1), springs that fade with the heat itself and no
     /// link bias: the fastest force-directed setting, for graphs of thousands of nodes.
-    /// Repulsion alone keeps nodes apart, so some overlap where springs pull hard (824
+    /// Repulsion alone keeps nodes apart, so some overlap where springs pull hard (833
     /// pairs on `n1000_e2500`; d3-force leaves 347); the stiffer hub springs and the
     /// bias of `force_directed()` would press twice as many together without contacts.
-    /// In exchange there is no pair search: measured on `n10000_e25000` (README), 9.4 ms
-    /// per step at the median and 10.9 ms at the 95th percentile, where
-    /// `force_directed()` takes 13.9 and 19.5 ms in the same session. Its springs, fading with the heat,
-    /// are weak once the layout rests, so a thrown node's springs pull with 5 % of their
+    /// In exchange there is no pair search: measured on `n10000_e25000` (README), 5.8 ms
+    /// per step at the median and 7.5 ms at the 95th percentile, where
+    /// `force_directed()` takes 10.5 and 14.4 ms in the same session. Its springs, fading
+    /// with the heat, are weak once the layout rests, so a thrown node's springs pull with 5 % of their
     /// strength ([`Cooling::coasting_spring_scale`]) to bring it back.
     ///
     /// # Example

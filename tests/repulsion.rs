@@ -239,3 +239,35 @@ fn one_pass_over_all_points_is_at_least_as_fine_as_a_query_per_point() {
         "mean relative error of the pass {pass:e} above the per-point queries' {query:e}"
     );
 }
+
+#[test]
+fn a_point_gets_the_same_bits_whichever_points_share_its_pass() {
+    // A group's members are summed two at a time (the last one of an odd count beside a
+    // copy of itself): which points are wanted changes who is paired with whom, and
+    // must not change a bit of anyone's force.
+    let points = scene_points("n1000_e2500");
+    let r = Repulsion::default();
+    let mut tree = ManyBody::default();
+    tree.build(&points);
+    let mut all = Vec::new();
+    tree.forces(r.strength, r.theta, r.min_distance, |_| true, &mut all);
+    type Wanted = fn(usize) -> bool;
+    let wanted_sets: [(&str, Wanted); 4] = [
+        ("every third", |i| i % 3 == 0),
+        ("odd", |i| i % 2 == 1),
+        ("the first 501", |i| i <= 500),
+        ("point 7 alone", |i| i == 7),
+    ];
+    let mut some = Vec::new();
+    for (label, wanted) in wanted_sets {
+        tree.forces(r.strength, r.theta, r.min_distance, wanted, &mut some);
+        for (i, (f, g)) in some.iter().zip(&all).enumerate() {
+            if wanted(i) {
+                assert!(
+                    f.x.to_bits() == g.x.to_bits() && f.y.to_bits() == g.y.to_bits(),
+                    "{label}: point {i} got {f:?}, {g:?} with every point wanted"
+                );
+            }
+        }
+    }
+}

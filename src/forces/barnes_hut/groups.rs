@@ -10,7 +10,9 @@ use super::{ManyBody, Query, NONE};
 
 /// Most points that share one walk in [`ManyBody::forces`]: larger groups walk the tree
 /// less often but sum longer lists. 64 was the fastest of 8 to 256 on `n10000_e25000`
-/// and the 100,000-node generated graph (2.5 and 29 ms a pass, against 3.2 and 42 at 16).
+/// and the 100,000-node generated graph with a sum of one point a pass; with two a pass
+/// (now), 128 and 256 take 1.95 and 2.7 ms a pass at n = 10,000 where 64 takes 1.8, and
+/// 32 is within the machine's noise of 64.
 const GROUP_SIZE: usize = 64;
 /// Independent partial sums per force, so the sum runs in vector registers.
 const LANES: usize = 8;
@@ -25,14 +27,14 @@ impl ManyBody {
     /// Points are taken in groups of at most 64 that share a cell of the tree (a run of
     /// the tree's order). One walk per group collects the far cells every member may
     /// take whole, judged by the distance from the cell's centre of charge to the
-    /// *group's* bounding box, and the points near enough to sum exactly; then each
-    /// pair of members sums that list in a vectorised loop. A cell is taken whole only where
-    /// [`force_on`](Self::force_on) would take it whole for every member; the cells
-    /// holding a member and leaves never are. So the pass opens at least the cells
-    /// `force_on` opens and its mean error is no larger (on `n10000_e25000` at theta 0.9,
-    /// 0.59 % against 0.83 %; single points can land either side), theta 0 is still the
-    /// exact sum, and on `n10000_e25000` at theta 0.9 a build and a pass take 1.9 ms
-    /// (README).
+    /// *group's* bounding box, and the points near enough to sum exactly; then the
+    /// members sum that list two at a time in a vectorised loop. A cell is taken whole
+    /// only where [`force_on`](Self::force_on) would take it whole for every member;
+    /// the cells holding a member and leaves never are. So the pass opens at least the
+    /// cells `force_on` opens and its mean error is no larger (on `n10000_e25000` at
+    /// theta 0.9, 0.59 % against 0.83 %; single points can land either side), theta 0 is
+    /// still the exact sum, and on `n10000_e25000` at theta 0.9 a build and a pass take
+    /// 1.8–1.9 ms (README).
     ///
     /// # Example
     /// ```
@@ -179,15 +181,13 @@ impl GroupLists {
     ///
     /// NOTE: written for the vectoriser of the baseline x86-64 target (SSE2): the
     /// division is taken for every entry and its result selected after (a select around
-    /// the division kept the loop scalar), and two points at a time fill the vector
-    /// registers (one left the loop scalar, and so did an iterator over them; four spill
-    /// them). A pass over all points of
-    /// `n10000_e25000` takes 1.7-1.9 ms instead of 3.4-3.6, with the same bits.
+    /// the division kept the loop scalar), and the points are indexed, two of them (one
+    /// point, or an iterator over the two, left the loop scalar; with four the 64 sums
+    /// overflow the 16 vector registers). The README gives the times.
     fn sum(&self, p: [Point2D<f32>; BLOCK], query: &Query) -> [Vector2D<f32>; BLOCK] {
         let (mut fx, mut fy) = ([[0.0_f32; LANES]; BLOCK], [[0.0_f32; LANES]; BLOCK]);
         let chunks = self.x.chunks_exact(LANES).zip(self.y.chunks_exact(LANES));
         for ((x, y), charge) in chunks.zip(self.charge.chunks_exact(LANES)) {
-            #[allow(clippy::needless_range_loop)]
             for m in 0..BLOCK {
                 for l in 0..LANES {
                     // The point itself and any coincident one add nothing, nor one so

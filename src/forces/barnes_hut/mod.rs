@@ -328,8 +328,8 @@ impl Query {
         Self {
             strength,
             theta_sq: theta * theta,
-            // Positive, so a point's own term (offset zero) is zero in `sum` without a
-            // branch.
+            // Positive, so no term divides by zero (a point's own term, at offset zero,
+            // is selected away in `sum` and skipped in `force_on`).
             min_sq: (min_distance * min_distance).max(f32::MIN_POSITIVE),
         }
     }

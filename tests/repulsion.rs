@@ -13,6 +13,14 @@ fn scene_points(name: &str) -> Vec<Point2D<f32>> {
     load_scene(name).nodes.iter().map(|n| n.position).collect()
 }
 
+/// The scene's positions and the tree built over them.
+fn tree_over(name: &str) -> (Vec<Point2D<f32>>, ManyBody) {
+    let points = scene_points(name);
+    let mut tree = ManyBody::default();
+    tree.build(&points);
+    (points, tree)
+}
+
 fn brute_force(points: &[Point2D<f32>], i: usize, r: &Repulsion) -> Vector2D<f32> {
     let mut f = Vector2D::zero();
     for (j, q) in points.iter().enumerate() {
@@ -26,10 +34,8 @@ fn brute_force(points: &[Point2D<f32>], i: usize, r: &Repulsion) -> Vector2D<f32
 
 #[test]
 fn theta_zero_is_the_exact_sum() {
-    let points = scene_points("n200_e500");
+    let (points, mut tree) = tree_over("n200_e500");
     let r = Repulsion::default();
-    let mut tree = ManyBody::default();
-    tree.build(&points);
     for i in 0..points.len() {
         let exact = brute_force(&points, i, &r);
         let bh = tree.force_on(i, r.strength, 0.0, r.min_distance);
@@ -44,10 +50,8 @@ fn theta_zero_is_the_exact_sum() {
 
 #[test]
 fn default_theta_stays_within_a_few_percent() {
-    let points = scene_points("n1000_e2500");
+    let (points, mut tree) = tree_over("n1000_e2500");
     let r = Repulsion::default();
-    let mut tree = ManyBody::default();
-    tree.build(&points);
     let mut total = 0.0;
     for i in 0..points.len() {
         let exact = brute_force(&points, i, &r);
@@ -193,10 +197,8 @@ fn pinned_nodes_push_but_are_not_pushed() {
 
 #[test]
 fn one_pass_over_all_points_is_at_least_as_fine_as_a_query_per_point() {
-    let points = scene_points("n1000_e2500");
+    let (points, mut tree) = tree_over("n1000_e2500");
     let r = Repulsion::default();
-    let mut tree = ManyBody::default();
-    tree.build(&points);
     let exact: Vec<Vector2D<f32>> = (0..points.len())
         .map(|i| brute_force(&points, i, &r))
         .collect();
@@ -245,10 +247,8 @@ fn a_point_gets_the_same_bits_whichever_points_share_its_pass() {
     // A group's members are summed two at a time (the last one of an odd count beside a
     // copy of itself): which points are wanted changes who is paired with whom, and
     // must not change a bit of anyone's force.
-    let points = scene_points("n1000_e2500");
+    let (_, mut tree) = tree_over("n1000_e2500");
     let r = Repulsion::default();
-    let mut tree = ManyBody::default();
-    tree.build(&points);
     let mut all = Vec::new();
     tree.forces(r.strength, r.theta, r.min_distance, |_| true, &mut all);
     type Wanted = fn(usize) -> bool;

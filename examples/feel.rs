@@ -10,14 +10,21 @@
 //!   beyond it), or a leaf is dragged 100 units outward over 10 frames and let go; the
 //!   layout runs to rest. Printed: how far the nodes moved, by hop distance from the
 //!   edited or dragged node (0, 1, 2, 3, 4+), mean and most.
+//! - **Added nodes**: 20 leaves added at the position of the node nearest the centre
+//!   (an interior node), joined to it; the layout runs to rest. Printed: how far that
+//!   node moved, the farthest a leaf rests from it, overlapping disks, and how far the
+//!   nodes 3+ hops from it moved.
+//! - **Release**: a lone node dragged through the given positions, one frame each, and
+//!   let go without motion. Printed: the speed it leaves with (its release-frame delta
+//!   over the frame time) against the pointer's last move.
 //!
 //! Run with `cargo run --release --example feel [--fast] [--default] [--whole-graph]
 //! [scene ...]` (`force_directed()` by default; `--fast`: `force_directed_fast()`;
 //! `--default`: the default configuration; `--whole-graph`: a disturbance reheats the
-//! whole layout, `Cooling::reheat_hops` `None`); scenes default to `les_miserables` and
-//! `karate`.
+//! whole layout, `Cooling::reheat_hops` `None`); scenes default to `les_miserables`,
+//! `karate` and `1138_bus`.
 
-use graph_canvas_layout::euclid::default::Vector2D;
+use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::quality::{self, Displacement};
 use graph_canvas_layout::{CanvasEdge, CanvasNode, CanvasSceneInput, Layout, RapierLayoutConfig};
 
@@ -142,7 +149,7 @@ fn main() {
         .map(String::as_str)
         .collect();
     if names.is_empty() {
-        names = vec!["les_miserables", "karate"];
+        names = vec!["les_miserables", "karate", "1138_bus"];
     }
     println!("| scene | thrown node | speed out after release (units/s) | flew further out | fastest back (units/s) | frames to rest | edge-length CV |");
     println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: |");
@@ -184,4 +191,77 @@ fn main() {
         let rows = quality::displacement_by_hops(&before, &host.scene, &dragged, 5);
         print_hops(name, "a leaf dragged 100 units", &rows, frames);
     }
+    println!();
+    println!("| scene | centre node moved | farthest leaf from it | overlapping disks | 3+ hops: mean / most moved | frames to rest |");
+    println!("| --- | ---: | ---: | ---: | ---: | ---: |");
+    for &name in &names {
+        add_leaves(name, &config, 20);
+    }
+    println!();
+    println!(
+        "| pointer, one frame each (units) | pointer's last move (units/s) | thrown at (units/s) |"
+    );
+    println!("| --- | ---: | ---: |");
+    for (xs, last) in [
+        (&[0.0, 10.0, 30.0][..], 1_200.0),
+        (&[0.0, 0.0, 20.0, 20.0, 40.0, 40.0][..], 600.0),
+        (&[0.0, 10.0, 30.0, 30.0, 30.0, 30.0, 30.0][..], 0.0),
+    ] {
+        let speed = release_speed(&config, xs);
+        // A throw of nothing prints as 0, not -0.
+        let speed = if speed.abs() < 0.5 { 0.0 } else { speed };
+        println!("| {xs:?} | {last:.0} | {speed:.0} |");
+    }
+}
+
+/// `count` leaves added at the position of the node nearest the centre of `name` at
+/// rest, joined to it, run to rest again.
+fn add_leaves(name: &str, config: &RapierLayoutConfig, count: u32) {
+    let mut host = Host::new(load(name), config.clone());
+    host.settle(FRAME, BUDGET);
+    let before = host.scene.clone();
+    let centre = host.centre();
+    let anchor = before
+        .nodes
+        .iter()
+        .min_by(|a, b| {
+            (a.position - centre)
+                .length()
+                .total_cmp(&(b.position - centre).length())
+        })
+        .map(|n| n.id)
+        .expect("nodes");
+    let at = host.pos(anchor);
+    let first = before.nodes.iter().map(|n| n.id).max().unwrap_or(0) + 1;
+    for id in first..first + count {
+        host.scene.nodes.push(CanvasNode::new(id, at));
+        host.scene.edges.push(CanvasEdge::new(anchor, id));
+    }
+    let frames = host.settle(FRAME, BUDGET);
+    let farthest = (first..first + count)
+        .map(|id| (host.pos(id) - host.pos(anchor)).length())
+        .fold(0.0, f32::max);
+    let far = quality::displacement_by_hops(&before, &host.scene, &anchor, 4)[3];
+    println!(
+        "| {name} | {:.1} | {farthest:.0} | {} | {:.2} / {:.1} | {frames} |",
+        (host.pos(anchor) - at).length(),
+        quality::overlapping_pairs(&host.scene, 16.0, 0.5),
+        far.mean,
+        far.max,
+    );
+}
+
+/// A lone node dragged through `xs` (one frame each) and let go without motion: the
+/// speed it leaves with.
+fn release_speed(config: &RapierLayoutConfig, xs: &[f32]) -> f32 {
+    let scene = CanvasSceneInput::new(vec![CanvasNode::new(1, Point2D::new(xs[0], 0.0))], vec![]);
+    let mut host = Host::new(scene, config.clone());
+    host.frame(FRAME);
+    host.extras.dragging.insert(1);
+    for &x in xs {
+        host.set_pos(1, Point2D::new(x, 0.0));
+        host.frame(FRAME);
+    }
+    host.extras.dragging.clear();
+    host.frame(FRAME).get(&1).map_or(0.0, |d| d.x) / FRAME
 }

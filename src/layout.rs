@@ -72,7 +72,20 @@ pub trait Layout<N> {
         extras: &LayoutExtras<N>,
     ) -> DeltaMap<N>;
 
-    /// Whether the layout is at rest, so the host may stop calling `step` every frame.
+    /// Whether the layout was at rest after the last call to `step`, so the host may
+    /// stop calling it every frame until something changes. It reports on the last
+    /// call: an edit, a drag or a pin made since is seen by the next `step`, not here,
+    /// so a host loop steps first and asks after:
+    ///
+    /// ```text
+    /// loop {
+    ///     let deltas = layout.step(&scene, &mut state, dt, &viewport, &extras);
+    ///     scene.apply_deltas(&deltas);
+    ///     if layout.is_converged(&state) { break; }
+    /// }
+    /// ```
+    ///
+    /// Layouts that keep their own rest state may ignore `state`. Default: `false`.
     fn is_converged(&self, _state: &Self::State) -> bool {
         false
     }

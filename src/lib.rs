@@ -42,8 +42,9 @@
 //! - [`Layout::step`] returns per-node deltas of this call only; pinned and dragged
 //!   nodes never appear in it.
 //! - Pinned nodes never move by physics; dragged nodes sit exactly where the host puts
-//!   them; releasing a drag throws the node with the pointer's speed over the drag's
-//!   last [`throw_window`](RapierLayoutConfig::throw_window) seconds.
+//!   them; releasing a drag throws the node with the pointer's speed over its last
+//!   move, unless the pointer stood still for longer than
+//!   [`throw_window`](RapierLayoutConfig::throw_window) before the release.
 //! - A free node the host moved itself (undo, snap) is put where the host put it.
 //! - [`RapierLayout::try_step`] rejects bad input with a [`LayoutError`] and changes
 //!   nothing; [`Layout::step`] leaves bad elements out and never panics.
@@ -166,7 +167,7 @@ pub use euclid;
 pub use petgraph;
 pub use rapier2d;
 
-pub use adapter::{RapierLayout, RapierLayoutState, REST_TIME};
+pub use adapter::{LayoutSnapshot, RapierLayout, RapierLayoutState, REST_TIME};
 pub use config::cooling::Cooling;
 pub use config::{
     Accuracy, BodyKindPolicy, ContactModel, ContactSoftness, EdgeJoint, EdgeWeight, GroupForce,
@@ -179,6 +180,7 @@ pub use input::node_forces::{AxisLock, AxisTarget, NodeForces, RingTarget};
 pub use input::petgraph::{spiral_position, NodeStart, SPIRAL_SPACING};
 pub use input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
 pub use input::scene_file::{SceneFile, SceneFileNode};
+pub use input::snapshot_error::SnapshotError;
 pub use input::topology::topology_hash;
 pub use input::validation::{LayoutError, MAX_COORDINATE};
 pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeMap, NodeSet};

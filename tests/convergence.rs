@@ -147,3 +147,36 @@ fn removing_an_edge_patches_only_that_joint() {
     }
     assert_eq!(host.layout.rebuild_count(), 1);
 }
+
+/// The README's host loop: step, apply, then ask whether the layout rests.
+fn run_to_rest(host: &mut Host<u32>, budget: usize) -> usize {
+    let mut frames = 0;
+    loop {
+        host.frame(FRAME);
+        frames += 1;
+        if host.layout.is_converged(&host.state) {
+            return frames;
+        }
+        assert!(frames < budget, "not at rest after {budget} frames");
+    }
+}
+
+#[test]
+fn the_readme_loop_runs_again_after_an_edit() {
+    let mut host = Host::new(load_scene("karate"), RapierLayoutConfig::force_directed());
+    run_to_rest(&mut host, 600);
+    // `is_converged` speaks of the last call: right after an edit it still says rest.
+    host.scene.nodes.push(node(100, 0.0, 0.0));
+    host.scene.edges.push(edge(100, 0));
+    assert!(host.layout.is_converged(&host.state));
+    let frames = run_to_rest(&mut host, 600);
+    assert!(
+        frames > 1,
+        "the loop stopped after {frames} frame(s): the edit was never laid out"
+    );
+    let edge = dist(host.pos(&100), host.pos(&0));
+    assert!(
+        (32.0..250.0).contains(&edge),
+        "the new node rests {edge} units from its neighbour"
+    );
+}

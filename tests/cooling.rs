@@ -127,28 +127,77 @@ fn a_drag_reheats_the_whole_layout_without_a_reach() {
 fn an_edit_heats_its_neighbourhood_without_a_rebuild() {
     let mut host = Host::new(load_scene("karate"), RapierLayoutConfig::force_directed());
     host.settle(SETTLE_BUDGET);
+    // A new leaf in free space, 150 units beyond the outermost node, joined to it.
+    let centre = host
+        .scene
+        .nodes
+        .iter()
+        .fold(Point2D::origin(), |c, n| c + n.position.to_vector() / 34.0);
+    let outer = host
+        .scene
+        .nodes
+        .iter()
+        .max_by(|a, b| dist(a.position, centre).total_cmp(&dist(b.position, centre)))
+        .map(|n| n.id)
+        .unwrap();
+    let at = host.pos(&outer) + (host.pos(&outer) - centre).normalize() * 150.0;
+    host.scene.nodes.push(node(100, at.x, at.y));
+    host.scene.edges.push(edge(outer, 100));
+    host.frame(FRAME);
+    assert_eq!(host.layout.rebuild_count(), 1);
+    assert_eq!(host.layout.patch_count(), 1);
+    let cooling = host.layout.config.cooling.unwrap();
+    // The layout stays cold; the new node and its neighbour are heated, as by a reheat
+    // to 1 cooled over one frame.
+    assert_eq!(host.layout.heat(), Some(cooling.min_alpha));
+    let hot = cooling.cooled(1.0, FRAME);
+    for id in [100, outer] {
+        assert_eq!(host.layout.node_heat(&id), Some(hot), "node {id}");
+    }
+    host.settle(SETTLE_BUDGET);
+    let gap = dist(host.pos(&100), host.pos(&outer));
+    assert!(
+        (32.0..300.0).contains(&gap),
+        "the new leaf settled {gap} from its neighbour (rest length 100, radius 16 each)"
+    );
+    assert_eq!(quality::overlapping_pairs(&host.scene, 16.0, 0.5), 0);
+}
+
+#[test]
+fn a_node_added_on_top_of_another_is_seated_and_heats_nothing() {
+    let mut host = Host::new(load_scene("karate"), RapierLayoutConfig::force_directed());
+    host.settle(SETTLE_BUDGET);
     let anchor = host.pos(&0);
     host.scene
         .nodes
         .push(node(100, anchor.x + 5.0, anchor.y + 5.0));
     host.scene.edges.push(edge(0, 100));
-    host.frame(FRAME);
-    assert_eq!(host.layout.rebuild_count(), 1);
-    assert_eq!(host.layout.patch_count(), 1);
+    let deltas = host.frame(FRAME);
     let cooling = host.layout.config.cooling.unwrap();
-    // The layout stays cold; the new node and its hub are heated, as by a reheat to 1
-    // cooled over one frame.
-    assert_eq!(host.layout.heat(), Some(cooling.min_alpha));
-    let hot = cooling.cooled(1.0, FRAME);
-    for id in [100, 0] {
-        assert_eq!(host.layout.node_heat(&id), Some(hot), "node {id}");
-    }
-    host.settle(SETTLE_BUDGET);
-    let gap = dist(host.pos(&100), host.pos(&0));
+    // Seated an edge length from its hub (the first call reports the way there), it
+    // settles as a thrown node coasts; the hub and the rest of the layout stay cold.
+    let seated = dist(host.pos(&100), host.pos(&0));
     assert!(
-        (32.0..300.0).contains(&gap),
-        "the new leaf settled {gap} from its hub (rest length 100, radius 16 each)"
+        (90.0..200.0).contains(&seated) && deltas[&100].length() > 60.0,
+        "seated {seated} from its hub, moved {:?} in the first call",
+        deltas[&100]
     );
+    assert_eq!(host.layout.heat(), Some(cooling.min_alpha));
+    assert_eq!(
+        host.layout.node_heat(&0),
+        Some(cooling.min_alpha),
+        "the hub"
+    );
+    let coasting = host.layout.node_heat(&100).unwrap();
+    assert!(
+        coasting < 0.01,
+        "the seated node is heated to {coasting}, not a coasting heat"
+    );
+    host.settle(SETTLE_BUDGET);
+    // Not heated, the hub rests where it was (a contact with the seated leaf could nudge
+    // it, well under a unit).
+    let moved = dist(host.pos(&0), anchor);
+    assert!(moved < 1.0, "the hub moved {moved} units");
     assert_eq!(quality::overlapping_pairs(&host.scene, 16.0, 0.5), 0);
 }
 

@@ -128,3 +128,70 @@ fn a_reused_stable_graph_index_does_not_inherit_the_removed_nodes_body() {
     assert_eq!(host.pos(&d), start);
     assert_eq!(world.joint_count(), 0, "b's spring went with it");
 }
+
+#[test]
+fn a_node_added_without_a_position_is_seated_beside_its_neighbour() {
+    // A host's graph laid out to rest, its positions kept in the host's own store.
+    let file = load_scene("karate");
+    let mut graph = StableGraph::<(), ()>::default();
+    let ids: Vec<_> = file.nodes.iter().map(|_| graph.add_node(())).collect();
+    for e in &file.edges {
+        graph.add_edge(ids[e.source as usize], ids[e.target as usize], ());
+    }
+    let mut host = Host::new(
+        CanvasSceneInput::from_petgraph(&graph),
+        RapierLayoutConfig::force_directed(),
+    );
+    host.settle(600);
+    let store: std::collections::HashMap<_, _> = host
+        .scene
+        .nodes
+        .iter()
+        .map(|n| (n.id, n.position))
+        .collect();
+    // Five nodes added to node 0 (the club's instructor, 16 neighbours) without a
+    // position: they start at its position and the layout seats them around it.
+    let anchor = ids[0];
+    let added: Vec<_> = (0..5).map(|_| graph.add_node(())).collect();
+    for &d in &added {
+        graph.add_edge(anchor, d, ());
+    }
+    host.scene = CanvasSceneInput::from_petgraph_with(
+        &graph,
+        |id, _| NodeStart {
+            position: store.get(&id).copied(),
+            radius: 0.0,
+        },
+        |_| 1.0,
+    );
+    for &d in &added {
+        assert_eq!(host.pos(&d), store[&anchor], "starts at its neighbour");
+    }
+    host.settle(600);
+    let moved = dist(host.pos(&anchor), store[&anchor]);
+    assert!(moved < 40.0, "the anchor moved {moved} units");
+    for &d in &added {
+        let away = dist(host.pos(&d), host.pos(&anchor));
+        assert!(
+            (32.0..250.0).contains(&away),
+            "an added node rests {away} units from its neighbour"
+        );
+    }
+    assert_eq!(
+        graph_canvas_layout::quality::overlapping_pairs(&host.scene, 16.0, 0.5),
+        0,
+        "disks overlap at rest"
+    );
+}
+
+#[test]
+fn a_scene_keyed_by_petgraph_ids_serialises() {
+    let mut graph = StableGraph::<(), ()>::default();
+    let a = graph.add_node(());
+    let b = graph.add_node(());
+    graph.add_edge(a, b, ());
+    let scene = CanvasSceneInput::from_petgraph(&graph);
+    let json = serde_json::to_string(&scene).expect("serialise");
+    let back: CanvasSceneInput<_> = serde_json::from_str(&json).expect("deserialise");
+    assert_eq!(back, scene, "{json}");
+}

@@ -8,7 +8,7 @@
 
 mod common;
 
-use common::session::{run, Action};
+use common::session::{run, run_resuming, Action};
 use common::FRAME;
 use graph_canvas_layout::{AxisLock, EdgeJoint, NodeForces, RapierLayoutConfig, TopologyUpdate};
 use proptest::prelude::*;
@@ -76,6 +76,7 @@ fn action() -> impl Strategy<Value = Action> {
         1 => id.clone().prop_map(Action::Poison),
         1 => (0usize..40, weight()).prop_map(|(i, w)| Action::Weigh(i, w)),
         1 => (id.clone(), node_forces()).prop_map(|(i, f)| Action::Force(i, f)),
+        1 => Just(Action::Resume),
         6 => frame_time().prop_map(Action::Step),
     ]
 }
@@ -98,6 +99,7 @@ fn long_action() -> impl Strategy<Value = Action> {
         1 => Just(Action::Settle),
         1 => (0usize..40, weight()).prop_map(|(i, w)| Action::Weigh(i, w)),
         1 => (id.clone(), node_forces()).prop_map(|(i, f)| Action::Force(i, f)),
+        1 => Just(Action::Resume),
         12 => frame_time().prop_map(Action::Step),
     ]
 }
@@ -165,7 +167,9 @@ proptest! {
     ) {
         let first = run(&config, &actions).map_err(TestCaseError::fail)?;
         let second = run(&config, &actions).map_err(TestCaseError::fail)?;
-        prop_assert_eq!(first, second, "two layouts fed the same session differ");
+        prop_assert_eq!(&first, &second, "two layouts fed the same session differ");
+        let resumed = run_resuming(&config, &actions).map_err(TestCaseError::fail)?;
+        prop_assert_eq!(first, resumed, "a layout saved and restored mid-session differs");
     }
 }
 
@@ -185,6 +189,8 @@ proptest! {
     ) {
         let first = run(&config, &actions).map_err(TestCaseError::fail)?;
         let second = run(&config, &actions).map_err(TestCaseError::fail)?;
-        prop_assert_eq!(first, second, "two layouts fed the same session differ");
+        prop_assert_eq!(&first, &second, "two layouts fed the same session differ");
+        let resumed = run_resuming(&config, &actions).map_err(TestCaseError::fail)?;
+        prop_assert_eq!(first, resumed, "a layout saved and restored mid-session differs");
     }
 }

@@ -1,7 +1,8 @@
 //! A host session decoded from the fuzzer's bytes: a configuration, then host actions
 //! (nodes and edges added and removed, pins, drags, throws, host moves, bad values, any
 //! frame time, runs to rest), with the invariants of `tests/sessions.rs` checked after
-//! every call and a second layout fed the same session compared bit for bit. Any
+//! every call and a second layout fed the same session, saved and restored through JSON
+//! wherever the session says so, compared bit for bit. Any
 //! broken invariant or panic is a finding.
 #![no_main]
 
@@ -14,7 +15,7 @@ use libfuzzer_sys::fuzz_target;
 #[path = "../../tests/common/mod.rs"]
 mod common;
 
-use common::session::{run, Action};
+use common::session::{run, run_resuming, Action};
 use common::FRAME;
 
 /// Ids the session draws from: few, so actions meet the same nodes again.
@@ -108,6 +109,7 @@ fn action(u: &mut Unstructured) -> Result<Action> {
             },
         ),
         15 if u.ratio(1, 2)? => Action::Force(id(u)?, node_forces(u)?),
+        16 if u.ratio(1, 4)? => Action::Resume,
         _ => Action::Step(frame_time(u)?),
     })
 }
@@ -155,9 +157,12 @@ fuzz_target!(|data: &[u8]| {
         }
     }
     let first = run(&config, &actions);
-    let second = run(&config, &actions);
+    let second = run_resuming(&config, &actions);
     match (first, second) {
-        (Ok(a), Ok(b)) => assert!(a == b, "two layouts fed the same session differ"),
+        (Ok(a), Ok(b)) => assert!(
+            a == b,
+            "a layout saved and restored mid-session differs from the one that never stopped"
+        ),
         (Err(e), _) | (_, Err(e)) => panic!("{e}\nconfig: {config:?}\nactions: {actions:?}"),
     }
 });

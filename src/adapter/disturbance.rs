@@ -13,8 +13,8 @@ const HOP_FALLOFF: f32 = 0.5;
 /// The nodes touched this call and the buffers that spread their heat.
 #[derive(Debug, Default)]
 pub(super) struct Disturbances {
-    /// `(slot, whether it heats itself)`.
-    touched: Vec<(u32, bool)>,
+    /// `(slot, whether it heats itself, whether its heat spreads to its neighbours)`.
+    touched: Vec<(u32, bool, bool)>,
     /// Something that reheats the whole layout happened (a configuration or gravity
     /// change, a new world).
     everything: bool,
@@ -24,8 +24,9 @@ pub(super) struct Disturbances {
     version: Option<u64>,
     /// Hop distance reached by the spread, by slot (`u32::MAX`: not reached).
     reached: Vec<u32>,
-    /// Whether the node in a slot heats itself.
+    /// Whether the node in a slot heats itself, and whether its heat spreads.
     itself: Vec<bool>,
+    spreads: Vec<bool>,
     queue: Vec<u32>,
 }
 
@@ -33,7 +34,14 @@ impl Disturbances {
     /// Records that the node in `slot` was touched. A dragged or thrown node does not
     /// heat itself (`itself` false): it coasts, and its neighbours are heated.
     pub(super) fn touch(&mut self, slot: usize, itself: bool) {
-        self.touched.push((slot as u32, itself));
+        self.touched.push((slot as u32, itself, true));
+    }
+
+    /// Records a node that settles where it is without heating anything: a new node
+    /// seated beside its neighbours (`seating.rs`) takes the heat of a coasting node and
+    /// leaves its neighbourhood asleep.
+    pub(super) fn touch_settling(&mut self, slot: usize) {
+        self.touched.push((slot as u32, false, false));
     }
 
     /// Records a disturbance of the whole layout.
@@ -76,14 +84,17 @@ impl Disturbances {
         self.reached.resize(n, u32::MAX);
         self.itself.clear();
         self.itself.resize(n, false);
+        self.spreads.clear();
+        self.spreads.resize(n, false);
         self.queue.clear();
         // A breadth-first search from every touched node at once.
-        for &(slot, itself) in &self.touched {
+        for &(slot, itself, spreads) in &self.touched {
             let s = slot as usize;
             if s >= n {
                 continue;
             }
             self.itself[s] |= itself;
+            self.spreads[s] |= spreads;
             if self.reached[s] != 0 {
                 self.reached[s] = 0;
                 self.queue.push(slot);
@@ -109,7 +120,7 @@ impl Disturbances {
                     body.wake_up(true);
                 }
             }
-            if hop >= hops {
+            if hop >= hops || (hop == 0 && !self.spreads[s]) {
                 continue;
             }
             for k in self.offsets[s]..self.offsets[s + 1] {

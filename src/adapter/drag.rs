@@ -63,12 +63,16 @@ pub(super) fn stale_ccd_in<N: Clone + Eq + Hash>(
     })
 }
 
-/// Records this call's host position of a dragged node and the pointer's velocity over
-/// the drag's last `window` seconds, capped at `max_speed`: what its release will throw
-/// it with. This call's move covers `frame_dt` seconds; the velocity measured so far
-/// stands for the rest of the window, or for as long as the drag has lasted if that is
-/// shorter, so a frame in which the pointer reported no motion halves the speed of a
-/// 2-frame window instead of zeroing it. The first frame of a drag has no velocity yet.
+/// Records this call's host position of a dragged node and, when the pointer moved, its
+/// velocity over that move: what a release throws the node with, capped at `max_speed`.
+///
+/// Pointers report at their own rate, so a moving drag may show no motion in some
+/// frames. A move is measured over the time since the pointer's previous report (this
+/// frame plus the motionless frames before it), which gives a pointer reporting every
+/// other frame its real speed; after a pause longer than `window` it is measured over
+/// this frame alone (a flick from rest). The last move's velocity stands until the next
+/// move, so an accelerating flick throws at the speed it reached, not an average of its
+/// start. The first frame of a drag has no velocity yet.
 pub(super) fn track_drag(
     host: &mut HostSync,
     position: Point2D<f32>,
@@ -77,28 +81,43 @@ pub(super) fn track_drag(
     window: f32,
     max_speed: f32,
 ) {
-    let window = finite_or(window, 0.0).max(0.0);
-    if was_dragging {
-        let before = host.drag_time.min((window - frame_dt).max(0.0));
-        let velocity =
-            ((position - host.drag_position) + host.drag_velocity * before) / (frame_dt + before);
+    if !was_dragging {
+        host.drag_velocity = Vector2D::zero();
+        host.drag_still = 0.0;
+    } else if position != host.drag_position {
+        let since = host.drag_still + frame_dt;
+        let over = if within_window(since, window) {
+            since
+        } else {
+            frame_dt
+        };
+        let velocity = (position - host.drag_position) / over;
         host.drag_velocity = if velocity.is_finite() {
             clamp_speed(velocity, max_speed)
         } else {
             Vector2D::zero()
         };
-        host.drag_time = (host.drag_time + frame_dt).min(window);
+        host.drag_still = 0.0;
     } else {
-        host.drag_velocity = Vector2D::zero();
-        host.drag_time = 0.0;
+        host.drag_still += frame_dt;
     }
     host.drag_position = position;
 }
 
-/// The velocity a body takes when it turns dynamic: the drag's when a drag ended (a
-/// throw, also of a node unpinned in the same call), none after an unpin or an unfreeze.
-pub(super) fn release_velocity(host: &HostSync, was_dragging: bool) -> Vector2D<f32> {
-    if was_dragging {
+/// Whether `seconds` without pointer motion still count as a moving pointer under a
+/// throw window of `window` seconds (a hair of tolerance, so three frames of 1/60 s are
+/// within 0.05 s).
+fn within_window(seconds: f32, window: f32) -> bool {
+    let window = finite_or(window, 0.0).max(0.0);
+    seconds <= window * (1.0 + 1e-4)
+}
+
+/// The velocity a body takes when it turns dynamic: the pointer's last move when a drag
+/// ended (a throw, also of a node unpinned in the same call) and the pointer moved within
+/// the last `window` seconds; none after a pointer that stood still for longer, an unpin
+/// or an unfreeze.
+pub(super) fn release_velocity(host: &HostSync, was_dragging: bool, window: f32) -> Vector2D<f32> {
+    if was_dragging && within_window(host.drag_still, window) {
         host.drag_velocity
     } else {
         Vector2D::zero()
@@ -118,7 +137,7 @@ fn clamp_speed(v: Vector2D<f32>, max_speed: f32) -> Vector2D<f32> {
 /// A thrown node, from its release until it rests: damped as
 /// [`flight_damping`](crate::RapierLayoutConfig::flight_damping) says until it turns
 /// back, and keeping the layout from its cold stop until it slows to rest.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
 pub(super) struct Flight<N> {
     pub(super) id: N,
     /// The direction it was thrown in.

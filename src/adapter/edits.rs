@@ -8,8 +8,9 @@ use std::hash::Hash;
 
 use euclid::default::{Point2D, Vector2D};
 
+use super::seating::Seating;
 use super::RapierLayout;
-use crate::config::{EdgeJoint, RapierLayoutConfig, SpringModel, TopologyUpdate};
+use crate::config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, SpringModel, TopologyUpdate};
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::input::topology::Topology;
 use crate::input::validation::node_is_valid;
@@ -42,7 +43,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.build_world(scene, &topology);
         } else {
             // Also a weight edit alone: its joints are re-tuned in place.
-            self.patch_world(scene, &topology);
+            self.patch_world(scene, extras, &topology);
         }
         self.topology_hash = topology.hash;
         self.weight_hash = topology.weight_hash;
@@ -64,14 +65,13 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.forces.reset();
         // Contacts stay out of the first unfolding until the heat lets them in.
         world.set_contacts_enabled(!(self.heat.unfolding || self.rebuilds == 0));
-        let mut touched = Vec::new();
         insert_missing_nodes(
             &mut world,
             scene,
             topology,
             &self.config,
-            self.world.as_ref(),
-            &mut touched,
+            Placement::Build(self.world.as_ref()),
+            &mut Vec::new(),
         );
         let degrees = topology.degrees(scene.nodes.len());
         insert_joints(
@@ -80,7 +80,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             topology,
             &degrees,
             &self.config,
-            &mut touched,
+            |_, _| {},
         );
         // A new world starts again: every body at rest where the host has it.
         self.disturbances.reset();
@@ -96,7 +96,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     }
 
     /// Inserts and removes only what changed; untouched bodies keep their motion.
-    fn patch_world(&mut self, scene: &CanvasSceneInput<N>, topology: &Topology) {
+    fn patch_world(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+        topology: &Topology,
+    ) {
         let config = &self.config;
         let Some(world) = self.world.as_mut() else {
             return;
@@ -128,7 +133,27 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             world.remove_node(id);
         }
         world.set_timestep(self.joint_dt);
-        insert_missing_nodes(world, scene, topology, config, None, &mut touched);
+        // Pinned and dragged nodes go where the host puts them.
+        let held = |id: &N| {
+            config.body_kind_policy == BodyKindPolicy::AllKinematic
+                || extras.pinned.contains(id)
+                || extras.dragging.contains(id)
+        };
+        let mut inserted = Vec::new();
+        insert_missing_nodes(
+            world,
+            scene,
+            topology,
+            config,
+            Placement::Patch(None, &held),
+            &mut inserted,
+        );
+        touched.extend(
+            inserted
+                .iter()
+                .filter(|(_, seated)| !seated)
+                .map(|(id, _)| id.clone()),
+        );
         // Joints: drop those whose edge went away, add the new ones.
         let index_of: HashMap<&N, usize, IdHasher> = topology
             .nodes
@@ -152,7 +177,20 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             kept
         });
         let degrees = topology.degrees(scene.nodes.len());
-        insert_joints(world, scene, topology, &degrees, config, &mut touched);
+        // A node seated beside its neighbours (its host position overlapped a disk) is
+        // where it belongs already: it settles there as a coasting node does, and its
+        // neighbours stay asleep where they rest. Every other edit heats its ends.
+        let seated: HashSet<&N, IdHasher> = inserted
+            .iter()
+            .filter_map(|(id, seated)| seated.then_some(id))
+            .collect();
+        insert_joints(world, scene, topology, &degrees, config, |a, b| {
+            for (end, other) in [(a, b), (b, a)] {
+                if !seated.contains(end) && !seated.contains(other) {
+                    touched.push(end.clone());
+                }
+            }
+        });
         let weight = |a: &N, b: &N| match (index_of.get(a), index_of.get(b)) {
             (Some(&x), Some(&y)) => weight_of.get(&(x.min(y), x.max(y))).copied(),
             _ => None,
@@ -170,6 +208,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             }
             _ => config.edge_joint,
         });
+        // In scene order (never the set's): wakes reach rapier in this order.
+        for (id, _) in inserted.iter().filter(|(_, seated)| *seated) {
+            if let Some(s) = world.slot_of(id) {
+                self.disturbances.touch_settling(s);
+            }
+        }
         for id in &touched {
             if let Some(s) = world.slot_of(id) {
                 self.disturbances.touch(s, true);
@@ -184,24 +228,44 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     }
 }
 
-/// Inserts a body for every node of `topology` that `world` lacks, in scene order, at
-/// the host's position (coincident ones spread apart) and anchored there; a node whose
-/// values are unusable takes its position, and its drag, from the `old` world (and is
-/// left out without one).
+/// Where the bodies of new nodes start.
+enum Placement<'a, N> {
+    /// A new world: at the host's positions (coincident ones spread apart); a node whose
+    /// values are unusable takes its position, and its drag, from the old world (and is
+    /// left out without one).
+    Build(Option<&'a RapierSceneWorld<N>>),
+    /// Nodes added to a world in motion: seated beside their neighbours when the host's
+    /// position overlaps another disk (`seating.rs`, the disks in place gathered at the
+    /// first new node), unless held (pinned or dragged).
+    Patch(Option<Seating>, &'a dyn Fn(&N) -> bool),
+}
+
+/// Inserts a body for every node of `topology` that `world` lacks, in scene order, where
+/// `placement` says, anchored at the host's position; records each in `inserted` with
+/// whether it was seated away from the host's position.
 fn insert_missing_nodes<N: Clone + Eq + Hash>(
     world: &mut RapierSceneWorld<N>,
     scene: &CanvasSceneInput<N>,
     topology: &Topology,
     config: &RapierLayoutConfig,
-    old: Option<&RapierSceneWorld<N>>,
-    inserted: &mut Vec<N>,
+    mut placement: Placement<'_, N>,
+    inserted: &mut Vec<(N, bool)>,
 ) {
     let mut spread = CoincidenceSpreader::default();
+    let neighbours = match placement {
+        Placement::Patch(..) => new_node_neighbours(world, scene, topology),
+        Placement::Build(_) => HashMap::default(),
+    };
+    let mut around = Vec::new();
     for &i in &topology.nodes {
         let node = &scene.nodes[i];
         if world.contains_node(&node.id) {
             continue;
         }
+        let old = match placement {
+            Placement::Build(old) => old,
+            Placement::Patch(..) => None,
+        };
         let position = if node_is_valid(node) {
             node.position
         } else {
@@ -210,9 +274,33 @@ fn insert_missing_nodes<N: Clone + Eq + Hash>(
                 None => continue,
             }
         };
-        world.insert_node(&binding_for(config, node), spread.place(position));
+        let (start, seated) = match &mut placement {
+            Placement::Build(_) => (spread.place(position), false),
+            Placement::Patch(seating, held) => {
+                let seating =
+                    seating.get_or_insert_with(|| Seating::new(world, config.edge_length()));
+                if held(&node.id) {
+                    seating.occupy(position, radius_of(config, node));
+                    (position, false)
+                } else {
+                    around.clear();
+                    around.extend(
+                        neighbours
+                            .get(&i)
+                            .into_iter()
+                            .flatten()
+                            .filter_map(|&j| world.get_position(&scene.nodes[j].id)),
+                    );
+                    match seating.seat(position, radius_of(config, node), &around) {
+                        Some(seat) => (seat, true),
+                        None => (position, false),
+                    }
+                }
+            }
+        };
+        world.insert_node(&binding_for(config, node), start);
         world.rebase_initial_position(&node.id, position);
-        inserted.push(node.id.clone());
+        inserted.push((node.id.clone(), seated));
         let before = old.and_then(|w| Some(*w.host_at(w.slot_of(&node.id)?)));
         if let (Some(before), Some(s)) = (before, world.slot_of(&node.id)) {
             // A drag in progress survives the rebuild, so its release still throws.
@@ -220,9 +308,29 @@ fn insert_missing_nodes<N: Clone + Eq + Hash>(
             host.dragging = before.dragging;
             host.drag_position = before.drag_position;
             host.drag_velocity = before.drag_velocity;
-            host.drag_time = before.drag_time;
+            host.drag_still = before.drag_still;
         }
     }
+}
+
+/// The neighbours (scene indices) of every node of `topology` that `world` lacks, in
+/// edge order.
+fn new_node_neighbours<N: Clone + Eq + Hash>(
+    world: &RapierSceneWorld<N>,
+    scene: &CanvasSceneInput<N>,
+    topology: &Topology,
+) -> HashMap<usize, Vec<usize>, IdHasher> {
+    let mut neighbours: HashMap<usize, Vec<usize>, IdHasher> = HashMap::default();
+    let is_new = |i: usize| !world.contains_node(&scene.nodes[i].id);
+    for &(a, b) in &topology.edges {
+        if is_new(a) {
+            neighbours.entry(a).or_default().push(b);
+        }
+        if is_new(b) {
+            neighbours.entry(b).or_default().push(a);
+        }
+    }
+    neighbours
 }
 
 /// Inserts the joint of every edge of `topology` (pairs that have one are skipped) and
@@ -233,14 +341,14 @@ fn insert_joints<N: Clone + Eq + Hash>(
     topology: &Topology,
     degrees: &[u32],
     config: &RapierLayoutConfig,
-    ends: &mut Vec<N>,
+    mut joined: impl FnMut(&N, &N),
 ) {
     world.reserve_joints(topology.edges.len().saturating_sub(world.joint_count()));
     for (&(a, b), &weight) in topology.edges.iter().zip(&topology.weights) {
         let (ia, ib) = (&scene.nodes[a].id, &scene.nodes[b].id);
         let kind = edge_joint_for(config, degrees[a], degrees[b], weight);
         if world.insert_weighted_edge_joint(ia, ib, &kind, weight) {
-            ends.extend([ia.clone(), ib.clone()]);
+            joined(ia, ib);
         }
     }
 }

@@ -19,14 +19,15 @@ use crate::RapierLayoutConfig;
 const RETUNE_STEP: f32 = 0.05;
 
 /// A cooling layout's heat and where it is in its schedule.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, serde::Serialize, serde::Deserialize)]
 pub(crate) struct Heat {
     /// The heat, in `(0, 1]`: what forces are multiplied by.
     pub(crate) alpha: f32,
     /// Simulated time the heat has spent at its floor since the last reheat.
     pub(crate) cold_time: f32,
-    /// Set by the cold stop: the world is not stepped until a disturbance, as d3-force
-    /// stops its timer.
+    /// Set by the cold stop (and by the cold start of
+    /// [`RapierLayout::at_rest`](crate::RapierLayout::at_rest)): the world is not stepped
+    /// until a disturbance, as d3-force stops its timer.
     pub(crate) halted: bool,
     /// The first unfolding: from the first build until the heat first reaches its floor
     /// (or the layout rests), when [`Cooling::first_contact_heat`](crate::Cooling) and
@@ -67,7 +68,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             // An interaction during the first unfolding: contacts in, and firm.
             self.end_unfolding();
         }
-        if disturbed || self.config.cooling.is_none() {
+        if disturbed {
             self.heat.halted = false;
         }
         if self.heat.halted {

@@ -33,8 +33,9 @@ pub(super) struct Matching<N> {
     /// Last pass's matches, kept to reuse slots and the buffer.
     previous: Vec<NodeMatch>,
     /// The edges of the scene the topology was last computed from, to skip that work
-    /// while the host passes the same edges.
-    edges: Vec<(N, N, u32)>,
+    /// while the host passes the same edges; `None` when not known (forgotten, or a
+    /// layout restored from a snapshot), so the next call computes the topology.
+    edges: Option<Vec<(N, N, u32)>>,
     /// Scene nodes this call left out: unusable values or a repeated id.
     pub(super) bad_nodes: usize,
     /// Repeated ids and bad edges in the scene the topology was last computed from.
@@ -47,9 +48,24 @@ impl<N> Default for Matching<N> {
             stamp: 0,
             matches: Vec::new(),
             previous: Vec::new(),
-            edges: Vec::new(),
+            edges: None,
             bad_nodes: 0,
             topology_problems: 0,
+        }
+    }
+}
+
+impl<N> Matching<N> {
+    /// The matching pass counter, which the world's nodes are stamped with.
+    pub(super) fn stamp(&self) -> u64 {
+        self.stamp
+    }
+
+    /// A matching that continues a saved layout, whose nodes carry stamps up to `stamp`.
+    pub(super) fn resumed(stamp: u64) -> Self {
+        Self {
+            stamp,
+            ..Self::default()
         }
     }
 }
@@ -124,18 +140,19 @@ impl<N: Clone + Eq + Hash> Matching<N> {
     /// Whether the scene passes the same edges, in the same order and with the same
     /// weights, as when the topology was last computed.
     fn edges_unchanged(&self, scene: &CanvasSceneInput<N>) -> bool {
-        self.edges.len() == scene.edges.len()
-            && self
-                .edges
-                .iter()
-                .zip(&scene.edges)
-                .all(|((s, t, w), e)| *s == e.source && *t == e.target && *w == e.weight.to_bits())
+        self.edges.as_ref().is_some_and(|edges| {
+            edges.len() == scene.edges.len()
+                && edges.iter().zip(&scene.edges).all(|((s, t, w), e)| {
+                    *s == e.source && *t == e.target && *w == e.weight.to_bits()
+                })
+        })
     }
 
     /// Remembers the scene's edges as the ones the topology was computed from.
     pub(super) fn remember_edges(&mut self, scene: &CanvasSceneInput<N>) {
-        self.edges.clear();
-        self.edges.extend(
+        let edges = self.edges.get_or_insert_with(Vec::new);
+        edges.clear();
+        edges.extend(
             scene
                 .edges
                 .iter()
@@ -145,7 +162,7 @@ impl<N: Clone + Eq + Hash> Matching<N> {
 
     /// Forgets the remembered edges, so the next call computes the topology again.
     pub(super) fn forget_edges(&mut self) {
-        self.edges.clear();
+        self.edges = None;
     }
 }
 

@@ -42,6 +42,8 @@ mod matching;
 mod node_forces;
 mod reconfigure;
 mod rest;
+mod resume;
+mod seating;
 mod skipped;
 mod state;
 mod substeps;
@@ -54,6 +56,7 @@ use heat::Heat;
 use matching::Matching;
 use rest::Rest;
 pub use rest::REST_TIME;
+pub use resume::LayoutSnapshot;
 pub use state::RapierLayoutState;
 
 /// A graph layout on a persistent Rapier2D world.
@@ -116,6 +119,8 @@ pub struct RapierLayout<N> {
     joint_dt: f32,
     /// The gravity of the last call: a change is a disturbance.
     gravity: Vector2D<f32>,
+    /// Built by [`RapierLayout::at_rest`]: the first world starts cold.
+    cold_start: bool,
 }
 
 impl<N> std::fmt::Debug for RapierLayout<N> {
@@ -167,6 +172,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             skipped: Vec::new(),
             joint_dt: DEFAULT_TIMESTEP,
             gravity: Vector2D::zero(),
+            cold_start: false,
         }
     }
 
@@ -393,7 +399,7 @@ impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
         self.advance(scene, state, dt, extras)
     }
 
-    /// True when the layout is at rest: a world exists, no dynamic body moved faster
+    /// True when the layout was at rest after the last call: a world exists, no dynamic body moved faster
     /// than [`RapierLayoutConfig::rest_speed`] for [`REST_TIME`] seconds of simulated
     /// time, nothing (a drag, a release, a host move, a topology change) disturbed it
     /// meanwhile, and every dynamic body is asleep; or a [`Cooling`](crate::Cooling)
@@ -401,6 +407,10 @@ impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
     /// something disturbs the layout. Nodes the last call left out
     /// ([`RapierLayout::skipped`]) do not count: the layout can rest while one waits for
     /// usable values.
+    ///
+    /// It speaks of the last call only: after an edit, a drag or a pin it still reports
+    /// what it did before, until a `step` has seen the change (step first, then ask; see
+    /// [`Layout::is_converged`]). `state` is not read: the rest state is the layout's own.
     fn is_converged(&self, _state: &RapierLayoutState) -> bool {
         self.world.is_some() && self.rest.converged
     }
@@ -427,10 +437,15 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.disturbances.clear();
         let reconfigured = self.apply_config_changes();
         let unfolding_before = self.heat.unfolding;
+        let cold = self.builds_cold();
         let mut disturbed = self.sync_topology(scene, extras);
         // NOTE: every drive comes with a disturbance from `sync_in`.
         disturbed |= self.sync_in(scene, extras, plan.frame_dt);
         disturbed |= self.sync_node_forces(scene, extras);
+        if cold {
+            // NOTE: after the sync, which flips pinned bodies and reads the forces.
+            disturbed = self.settle_cold();
+        }
         self.note_skipped(scene, extras);
         let gravity = Vector2D::new(
             finite_or(state.gravity_x, 0.0),

@@ -17,7 +17,7 @@ use crate::timestep::StepPlan;
 pub const REST_TIME: f32 = 0.5;
 
 /// The convergence signal.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug, Default, serde::Serialize, serde::Deserialize)]
 pub(crate) struct Rest {
     /// Simulated time since the last disturbance or fast body.
     pub(crate) calm_time: f32,

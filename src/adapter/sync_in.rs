@@ -136,7 +136,14 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
             }
             Some(RigidBodyType::Dynamic) => {
                 let thrown = current != RigidBodyType::Dynamic && was_dragging;
-                disturbed |= free(self.world, s, current, body_pos, host);
+                disturbed |= free(
+                    self.world,
+                    s,
+                    current,
+                    body_pos,
+                    host,
+                    self.config.throw_window,
+                );
                 if thrown {
                     self.take_off(s, &node.id);
                 }
@@ -285,10 +292,11 @@ fn free<N: Clone + Eq + Hash>(
     current: RigidBodyType,
     body_pos: Point2D<f32>,
     host: Point2D<f32>,
+    throw_window: f32,
 ) -> bool {
     let sync = *world.host_at(s);
     if current != RigidBodyType::Dynamic {
-        let velocity = release_velocity(&sync, sync.dragging);
+        let velocity = release_velocity(&sync, sync.dragging, throw_window);
         let body = world.body_at_mut(s);
         body.set_body_type(RigidBodyType::Dynamic, true);
         if body_pos != host {

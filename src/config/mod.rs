@@ -85,14 +85,18 @@ pub struct RapierLayoutConfig {
     /// A throw faster than this flies at the cap. Default: `40_000.0` (rapier's own
     /// 400 lengths/s at `length_unit` 100).
     pub max_speed: f32,
-    /// How far back, in seconds, a release looks to measure the pointer's speed it
-    /// throws the node with: the mean velocity of the drag over its last `throw_window`
-    /// seconds (earlier motion fades out exponentially). Pointers report at their own
-    /// rate, so a 60 Hz mouse on a 144 Hz display leaves frames in which a moving drag
-    /// did not move; measured over the last frame alone, a release that lands in one of
-    /// them throws nothing. Longer windows smooth more and carry a flick's speed into a
-    /// release after the hand has stopped for part of the window; `0` measures the last
-    /// frame alone. Default: `0.05` (egui's pointer velocity looks back 0.1 s).
+    /// How long, in seconds, a dragged node's pointer may go without reporting motion
+    /// and still count as moving. A release throws the node with the pointer's velocity
+    /// over its last reported move: the move's length over the time since the report
+    /// before it, which takes in the frames without motion that pointers leave when they
+    /// report at their own rate (a 60 Hz mouse on a 120 Hz display moves a drag every
+    /// other frame), or over the move's own frame after a pause longer than the window
+    /// (a flick from rest). A release after the pointer stood still for longer than the
+    /// window throws nothing. Frame times are the real `dt` passed to
+    /// [`step`](crate::Layout::step) (the fixed timestep when it is unusable). Longer
+    /// windows bridge longer gaps between reports and still throw a node the hand paused
+    /// on briefly before letting go; `0` counts only a move in the frame just before the
+    /// release. Default: `0.05` (three frames at 60 Hz).
     pub throw_window: f32,
     /// Whether nodes collide. Off, the world holds no colliders at all (bodies get their
     /// mass directly), which saves the broad and narrow phases. Default: `true`.
@@ -182,6 +186,17 @@ pub struct RapierLayoutConfig {
 }
 
 impl RapierLayoutConfig {
+    /// The length an edge rests at: a spring's rest length, a rope's or a rod's length,
+    /// and twice the default radius for edges without a joint.
+    pub(crate) fn edge_length(&self) -> f32 {
+        match self.edge_joint {
+            EdgeJoint::Spring { rest_length, .. } => rest_length,
+            EdgeJoint::Rope { max_length, .. } => max_length,
+            EdgeJoint::Distance { length } => length,
+            EdgeJoint::None => 2.0 * self.default_radius,
+        }
+    }
+
     /// Whether nodes collide through the layout's own disk separation.
     pub(crate) fn separates_disks(&self) -> bool {
         self.collisions && self.contact_model == ContactModel::Disks && !self.contact_events

@@ -26,6 +26,7 @@ use std::hash::Hash;
 
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::Vector;
+use serde::{Deserialize, Serialize};
 
 use crate::config::cooling::Cooling;
 use crate::config::{ContactSoftness, RapierLayoutConfig};
@@ -224,7 +225,43 @@ impl<N> std::fmt::Debug for Forces<N> {
     }
 }
 
+/// What the forces carry from one call to the next, as a snapshot keeps it: the host's
+/// per-node forces as the last call read them, whether forces are on the bodies, and the
+/// disk separation's warm-start impulses. Everything else they keep is a cache built
+/// again from the world.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub(crate) struct SavedForces {
+    targets: NodeTargets,
+    applied: bool,
+    contacts: Vec<(u32, u32, f32)>,
+    contacts_version: Option<u64>,
+}
+
 impl<N: Clone + Eq + Hash> Forces<N> {
+    /// What the next call needs of these forces to continue bit for bit.
+    pub(crate) fn save(&self) -> SavedForces {
+        let (contacts, contacts_version) = self.collide.warm_start_state();
+        SavedForces {
+            targets: self.targets.clone(),
+            applied: self.applied,
+            contacts,
+            contacts_version,
+        }
+    }
+
+    /// Forces that continue where `saved` was taken (their caches empty).
+    pub(crate) fn from_saved(saved: SavedForces) -> Self {
+        let mut forces = Self {
+            targets: saved.targets,
+            applied: saved.applied,
+            ..Self::default()
+        };
+        forces
+            .collide
+            .set_warm_start_state(saved.contacts, saved.contacts_version);
+        forces
+    }
+
     /// Whether `config` asks for any force on bodies, or for the layout's own disk
     /// separation.
     pub(crate) fn any_active(&self, config: &RapierLayoutConfig) -> bool {

@@ -6,19 +6,20 @@
 //! host sets none.
 
 use euclid::default::Vector2D;
+use serde::{Deserialize, Serialize};
 
 use super::ForceSums;
 use crate::input::node_forces::{AxisLock, NodeForces};
 
 /// A group: its key and its members' slots, in slot order.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub(crate) struct Group {
     pub(crate) key: u32,
     pub(crate) members: Vec<u32>,
 }
 
 /// The per-node forces of one call, by world slot.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub(crate) struct NodeTargets {
     /// Every slot's forces (all `None` for a node without an entry); empty while no
     /// node has any.

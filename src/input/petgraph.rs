@@ -3,12 +3,14 @@
 //! graph's own node ids as scene ids. Keeping a layout alive across a host's edits is
 //! [`RapierLayout::forget_node`](crate::RapierLayout::forget_node)'s part.
 
+use std::collections::HashMap;
 use std::hash::Hash;
 
-use euclid::default::Point2D;
+use euclid::default::{Point2D, Vector2D};
 use petgraph::visit::{EdgeRef, IntoEdgeReferences, IntoNodeReferences, NodeRef};
 
 use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput};
+use crate::layout::IdHasher;
 
 /// The spacing of the start spiral: node `i` starts `SPIRAL_SPACING · √(0.5 + i)` units
 /// from the origin at angle `i · π (3 − √5)`, d3-force's phyllotaxis at 2.2 times its
@@ -32,9 +34,15 @@ pub fn spiral_position(i: usize) -> Point2D<f32> {
 
 /// How a node of a petgraph graph starts in the scene
 /// ([`CanvasSceneInput::from_petgraph_with`]).
+///
+/// A host that keeps positions for the nodes it has laid out and adds a node later gives
+/// the new node `position: None`: it starts at the centre of its neighbours that have a
+/// position, and a [`RapierLayout`](crate::RapierLayout) seats it beside them (an edge
+/// length from a single neighbour, in the freest direction) without moving the rest.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct NodeStart {
-    /// Its position, or `None` for its place on the start spiral.
+    /// Its position, or `None`: at the centre of its neighbours that have one, or on the
+    /// start spiral when none has.
     pub position: Option<Point2D<f32>>,
     /// Its radius (0: the layout's default).
     pub radius: f32,
@@ -59,9 +67,12 @@ impl<N: Clone + Eq + Hash> CanvasSceneInput<N> {
     /// let mut scene = CanvasSceneInput::from_petgraph(&graph);
     /// let mut layout = RapierLayout::new(RapierLayoutConfig::force_directed());
     /// let (mut state, extras) = (RapierLayoutState::default(), LayoutExtras::default());
-    /// while !layout.is_converged(&state) {
+    /// loop {
     ///     let deltas = layout.step(&scene, &mut state, 1.0 / 60.0, &Default::default(), &extras);
     ///     scene.apply_deltas(&deltas);
+    ///     if layout.is_converged(&state) {
+    ///         break;
+    ///     }
     /// }
     /// // The host's own store, keyed by the graph's node index.
     /// let positions: std::collections::HashMap<_, _> =
@@ -91,7 +102,9 @@ impl<N: Clone + Eq + Hash> CanvasSceneInput<N> {
 
     /// [`from_petgraph`](Self::from_petgraph) with each node's start (`node(id, weight)`:
     /// position and radius) and each edge's weight (`weight(edge weight)`) taken from
-    /// the graph's own data. Nodes without a position take their place on the spiral.
+    /// the graph's own data. A node without a position starts at the centre of its
+    /// neighbours that have one (the layout seats it beside them on its first call), or
+    /// on the spiral when none has.
     ///
     /// # Example
     /// ```
@@ -118,19 +131,55 @@ impl<N: Clone + Eq + Hash> CanvasSceneInput<N> {
     where
         G: IntoNodeReferences<NodeId = N> + IntoEdgeReferences,
     {
-        let nodes = graph
-            .node_references()
-            .enumerate()
-            .map(|(i, r)| {
-                let start = node(r.id(), r.weight());
-                let position = start.position.unwrap_or_else(|| spiral_position(i));
-                CanvasNode::new(r.id(), position).with_radius(start.radius)
-            })
-            .collect();
-        let edges = graph
+        let mut nodes: Vec<CanvasNode<N>> = Vec::new();
+        let mut given: Vec<bool> = Vec::new();
+        for r in graph.node_references() {
+            let start = node(r.id(), r.weight());
+            let position = start.position.unwrap_or_else(Point2D::origin);
+            nodes.push(CanvasNode::new(r.id(), position).with_radius(start.radius));
+            given.push(start.position.is_some());
+        }
+        let edges: Vec<CanvasEdge<N>> = graph
             .edge_references()
             .map(|e| CanvasEdge::new(e.source(), e.target()).with_weight(weight(e.weight())))
             .collect();
+        place_beside_neighbours(&mut nodes, &given, &edges);
         CanvasSceneInput::new(nodes, edges)
+    }
+}
+
+/// Gives every node without a position (`given` false) the centre of its neighbours
+/// that have one, in edge order, or its place on the start spiral when none has.
+fn place_beside_neighbours<N: Clone + Eq + Hash>(
+    nodes: &mut [CanvasNode<N>],
+    given: &[bool],
+    edges: &[CanvasEdge<N>],
+) {
+    if given.iter().all(|&g| g) {
+        return;
+    }
+    let index: HashMap<&N, usize, IdHasher> =
+        nodes.iter().enumerate().map(|(i, n)| (&n.id, i)).collect();
+    let mut sums = vec![(Vector2D::zero(), 0_u32); nodes.len()];
+    for edge in edges {
+        let (Some(&a), Some(&b)) = (index.get(&edge.source), index.get(&edge.target)) else {
+            continue;
+        };
+        for (end, other) in [(a, b), (b, a)] {
+            if !given[end] && given[other] {
+                let sum = &mut sums[end];
+                *sum = (sum.0 + nodes[other].position.to_vector(), sum.1 + 1);
+            }
+        }
+    }
+    for (i, node) in nodes.iter_mut().enumerate() {
+        if !given[i] {
+            let (sum, count) = sums[i];
+            node.position = if count > 0 {
+                (sum / count as f32).to_point()
+            } else {
+                spiral_position(i)
+            };
+        }
     }
 }

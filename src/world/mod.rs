@@ -38,6 +38,7 @@ pub(crate) mod events;
 mod nodes;
 pub(crate) mod rapier_joint;
 mod recovery;
+pub(crate) mod saved;
 pub(crate) mod slot;
 mod spring_scale;
 mod stepping;
@@ -55,7 +56,7 @@ pub const MAX_PENDING_EVENTS: usize = 65_536;
 pub const MIN_BODY_MASS: f32 = 1.0e-3;
 
 /// What the world models beyond bodies and joints.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct WorldOptions {
     /// Give each node a collider. Off, bodies get their mass directly and nothing
     /// collides: the broad and narrow phases have nothing to do.

@@ -7,6 +7,7 @@ use std::hash::Hash;
 
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::{ColliderHandle, ImpulseJointHandle, RigidBodyHandle};
+use serde::{Deserialize, Serialize};
 
 use super::RapierSceneWorld;
 use crate::config::EdgeJoint;
@@ -14,7 +15,7 @@ use crate::input::node_forces::AxisLock;
 use crate::world::bindings::ColliderSpec;
 
 /// One node's body and the bookkeeping kept for it.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub(crate) struct NodeSlot<N> {
     pub(crate) id: N,
     /// Never reused: names the node in joint keys across swaps and removals.
@@ -31,7 +32,7 @@ pub(crate) struct NodeSlot<N> {
 
 /// What [`RapierLayout`](crate::RapierLayout) keeps per node between calls: what it
 /// told the host, the node's pin and drag state, and whether the next sync can skip it.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Serialize, Deserialize)]
 pub(crate) struct HostSync {
     /// Where the host should have the node after adding the last delta it was given:
     /// a host position elsewhere is a host edit.
@@ -41,11 +42,11 @@ pub(crate) struct HostSync {
     pub(crate) pinned: bool,
     pub(crate) dragging: bool,
     /// The host's position of a dragged node at the last call, the pointer's velocity
-    /// over the drag's recent past (what a release throws the node with), and the time
-    /// that velocity covers, at most the throw window.
+    /// over its last move (what a release throws the node with), and the seconds since
+    /// that move.
     pub(crate) drag_position: Point2D<f32>,
     pub(crate) drag_velocity: Vector2D<f32>,
-    pub(crate) drag_time: f32,
+    pub(crate) drag_still: f32,
     /// Inserted during this call: its body may sit off the host's position (coincident
     /// nodes are spread), which is not a host move.
     pub(crate) fresh: bool,
@@ -73,7 +74,7 @@ impl HostSync {
             dragging: false,
             drag_position: position,
             drag_velocity: Vector2D::zero(),
-            drag_time: 0.0,
+            drag_still: 0.0,
             fresh: true,
             synced: false,
             heat: 0.0,
@@ -84,7 +85,7 @@ impl HostSync {
 }
 
 /// One joint and the edge it stands for.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub(crate) struct JointSlot<N> {
     pub(crate) key: (u64, u64),
     /// The rapier joint, or `None` for a spring applied as forces

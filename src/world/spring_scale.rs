@@ -5,6 +5,7 @@
 use std::hash::Hash;
 
 use euclid::default::Point2D;
+use serde::{Deserialize, Serialize};
 
 use super::RapierSceneWorld;
 use crate::config::EdgeJoint;
@@ -12,13 +13,14 @@ use crate::sanitize::{finite_or, positive_or};
 
 /// The factor on every spring's stiffness and damping, and the inputs of the last
 /// [`RapierSceneWorld::set_spring_scale_by_stretch`] that chose it.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Serialize, Deserialize)]
 pub(crate) struct SpringScale {
     /// The factor near the rest lengths (a cooling layout's `heat^spring_exponent`).
     pub(super) near: f32,
     /// The factor far from them (the heat).
     pub(super) far: f32,
-    /// The median stretch from which `far` blends in.
+    /// The median stretch from which `far` blends in (infinite: never).
+    #[serde(with = "crate::sanitize::infinite_as_null")]
     pub(super) limit: f32,
     /// The factor every spring has now.
     pub(super) applied: f32,

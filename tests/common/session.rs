@@ -7,8 +7,8 @@ use std::collections::{HashMap, HashSet};
 
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
-    AxisLock, CanvasSceneInput, DeltaMap, EdgeJoint, EdgeWeight, Layout, NodeForces,
-    RapierLayoutConfig, MAX_COORDINATE,
+    AxisLock, CanvasSceneInput, DeltaMap, EdgeJoint, EdgeWeight, Layout, LayoutSnapshot,
+    NodeForces, RapierLayout, RapierLayoutConfig, MAX_COORDINATE,
 };
 
 use super::{edge, node, Host, FRAME};
@@ -63,6 +63,9 @@ pub enum Action {
     Force(u32, NodeForces),
     /// Calls at 1/60 s until the layout rests (at most 600).
     Settle,
+    /// The host saves the layout and carries on with it restored from the save (a
+    /// snapshot through JSON) in a [`run_resuming`]; nothing in a [`run`].
+    Resume,
     Step(f32),
 }
 
@@ -140,7 +143,7 @@ pub fn apply_action(host: &mut Host<u32>, action: &Action) {
                 host.extras.forces.insert(id, forces);
             }
         }
-        Action::Throw(..) | Action::Settle | Action::Step(_) => {}
+        Action::Throw(..) | Action::Settle | Action::Resume | Action::Step(_) => {}
     }
 }
 
@@ -367,7 +370,38 @@ pub fn call(host: &mut Host<u32>, dt: f32, log: &mut Vec<DeltaBits>) -> Result<(
     Ok(())
 }
 
+/// Runs `actions` on a new layout under `config`, checking every call; returns every
+/// call's deltas. [`Action::Resume`] does nothing.
 pub fn run(config: &RapierLayoutConfig, actions: &[Action]) -> Result<Vec<DeltaBits>, String> {
+    run_with(config, actions, false)
+}
+
+/// [`run`], with the layout saved through JSON and restored into a new one at every
+/// [`Action::Resume`]: the deltas must be the same bit for bit.
+pub fn run_resuming(
+    config: &RapierLayoutConfig,
+    actions: &[Action],
+) -> Result<Vec<DeltaBits>, String> {
+    run_with(config, actions, true)
+}
+
+/// `layout` saved as a JSON snapshot and restored into a new layout.
+pub fn resumed(layout: &RapierLayout<u32>) -> Result<RapierLayout<u32>, String> {
+    let json = serde_json::to_string(&layout.snapshot()).map_err(|e| format!("save: {e}"))?;
+    let snapshot: LayoutSnapshot<u32> =
+        serde_json::from_str(&json).map_err(|e| format!("read back: {e}"))?;
+    let mut restored = RapierLayout::default();
+    restored
+        .restore(snapshot)
+        .map_err(|e| format!("restore: {e}"))?;
+    Ok(restored)
+}
+
+fn run_with(
+    config: &RapierLayoutConfig,
+    actions: &[Action],
+    resume: bool,
+) -> Result<Vec<DeltaBits>, String> {
     let mut host = Host::new(CanvasSceneInput::default(), config.clone());
     let mut log = Vec::new();
     let mut since_poison = 0;
@@ -400,6 +434,7 @@ pub fn run(config: &RapierLayoutConfig, actions: &[Action]) -> Result<Vec<DeltaB
                 host.extras.dragging.remove(&id);
                 call(&mut host, FRAME, &mut log)?;
             }
+            Action::Resume if resume => host.layout = resumed(&host.layout)?,
             Action::Settle => {
                 for _ in 0..600 {
                     call(&mut host, FRAME, &mut log)?;

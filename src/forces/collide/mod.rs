@@ -176,6 +176,22 @@ impl Collide {
         true
     }
 
+    /// What the next substep warm-starts from: the last substep's pushing pairs `(slot
+    /// a, slot b, impulse)` and the world version their slots belong to.
+    pub(crate) fn warm_start_state(&self) -> (Vec<(u32, u32, f32)>, Option<u64>) {
+        (self.last.clone(), self.last_version)
+    }
+
+    /// Puts back what [`warm_start_state`](Self::warm_start_state) returned.
+    pub(crate) fn set_warm_start_state(
+        &mut self,
+        last: Vec<(u32, u32, f32)>,
+        version: Option<u64>,
+    ) {
+        self.last = last;
+        self.last_version = version;
+    }
+
     /// The velocity change [`resolve`](Self::resolve) gives the body in slot `s`.
     pub(crate) fn change(&self, s: usize) -> Vector2D<f32> {
         let l = self.local.get(s).map_or(NONE, |&l| l) as usize;

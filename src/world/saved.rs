@@ -1,0 +1,201 @@
+//! The world as a snapshot keeps it ([`SavedWorld`]): rapier's own state (bodies with
+//! their velocities, forces and sleep, colliders, joints with their warm-start impulses,
+//! islands, the broad phase's tree and pairs, the narrow phase's contacts, CCD) and the
+//! scene mapping beside it, so that a world built back from it steps bit for bit as the
+//! one it was taken of. What only speeds a step up (rapier's pipeline workspace, the
+//! id lookups, the springs' stretch cache) is not kept: it is built again from the rest.
+
+use std::collections::{HashMap, VecDeque};
+use std::hash::Hash;
+
+use rapier2d::prelude::{
+    BroadPhaseBvh, CCDSolver, ColliderSet, ImpulseJointSet, IntegrationParameters, IslandManager,
+    MultibodyJointSet, NarrowPhase, PhysicsPipeline, RigidBodySet, SoftBodySet,
+};
+use serde::{Deserialize, Serialize};
+
+use super::events::{CollisionCollector, SceneEvent};
+use super::slot::{JointSlot, NodeSlot};
+use super::spring_scale::{SpringScale, StretchCache};
+use super::{RapierSceneWorld, WorldOptions};
+use crate::input::snapshot_error::SnapshotError;
+use crate::layout::IdHasher;
+
+/// Everything a world needs to continue where it was.
+#[derive(Clone, Serialize, Deserialize)]
+#[serde(bound(serialize = "N: Serialize", deserialize = "N: Deserialize<'de>"))]
+pub(crate) struct SavedWorld<N> {
+    bodies: RigidBodySet,
+    colliders: ColliderSet,
+    impulse_joints: ImpulseJointSet,
+    multibody_joints: MultibodyJointSet,
+    soft_bodies: SoftBodySet,
+    islands: IslandManager,
+    broad_phase: BroadPhaseBvh,
+    narrow_phase: NarrowPhase,
+    ccd_solver: CCDSolver,
+    params: IntegrationParameters,
+    pub(crate) slots: Vec<NodeSlot<N>>,
+    next_serial: u64,
+    joints: Vec<JointSlot<N>>,
+    options: WorldOptions,
+    events: VecDeque<SceneEvent<N>>,
+    dropped_events: u64,
+    recovered: Vec<N>,
+    topology_hash: u64,
+    spring_scale: SpringScale,
+    joint_dt: f32,
+    version: u64,
+    spring_forces: bool,
+    touched: bool,
+    ccd_off_once: bool,
+    contacts_enabled: bool,
+}
+
+impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
+    /// A copy of everything this world needs to continue where it is.
+    pub(crate) fn save(&self) -> SavedWorld<N> {
+        SavedWorld {
+            bodies: self.bodies.clone(),
+            colliders: self.colliders.clone(),
+            impulse_joints: self.impulse_joints.clone(),
+            multibody_joints: self.multibody_joints.clone(),
+            soft_bodies: self.soft_bodies.clone(),
+            islands: self.islands.clone(),
+            broad_phase: self.broad_phase.clone(),
+            narrow_phase: self.narrow_phase.clone(),
+            ccd_solver: self.ccd_solver.clone(),
+            params: self.params,
+            slots: self.slots.clone(),
+            next_serial: self.next_serial,
+            joints: self.joints.clone(),
+            options: self.options,
+            events: self.events.clone(),
+            dropped_events: self.dropped_events,
+            recovered: self.recovered.clone(),
+            topology_hash: self.topology_hash,
+            spring_scale: self.spring_scale,
+            joint_dt: self.joint_dt,
+            version: self.version,
+            spring_forces: self.spring_forces,
+            touched: self.touched,
+            ccd_off_once: self.ccd_off_once,
+            contacts_enabled: self.contacts_enabled,
+        }
+    }
+
+    /// The world `saved` describes, after checking that its parts agree (every node's
+    /// body, collider and joints exist, ids and joints are not repeated, positions are
+    /// finite), so that no later call can meet a handle that leads nowhere.
+    ///
+    /// # Errors
+    /// [`SnapshotError::Inconsistent`] naming the first part that does not agree.
+    pub(crate) fn from_saved(saved: SavedWorld<N>) -> Result<Self, SnapshotError> {
+        let inconsistent = |what: &str| Err(SnapshotError::Inconsistent(what.to_owned()));
+        let mut index: HashMap<N, u32, IdHasher> =
+            HashMap::with_capacity_and_hasher(saved.slots.len(), IdHasher::default());
+        let mut colliders = 0;
+        for (s, slot) in saved.slots.iter().enumerate() {
+            let Some(body) = saved.bodies.get(slot.body) else {
+                return inconsistent("a node's body is missing");
+            };
+            if body.user_data != s as u128 {
+                return inconsistent("a body is not the one its node names");
+            }
+            if !(body.translation().is_finite()
+                && body.linvel().is_finite()
+                && slot.anchor.is_finite())
+            {
+                return inconsistent("a node's position or velocity is not finite");
+            }
+            if let Some(collider) = slot.collider {
+                if saved.colliders.get(collider).and_then(|c| c.parent()) != Some(slot.body) {
+                    return inconsistent("a node's collider is missing or not on its body");
+                }
+                colliders += 1;
+            }
+            if slot.serial >= saved.next_serial {
+                return inconsistent("a node's serial is not below the next one");
+            }
+            if index.insert(slot.id.clone(), s as u32).is_some() {
+                return inconsistent("a node id is repeated");
+            }
+        }
+        if saved.bodies.len() != saved.slots.len() || saved.colliders.len() != colliders {
+            return inconsistent("bodies or colliders that no node owns");
+        }
+        let mut joint_index: HashMap<(u64, u64), u32, IdHasher> =
+            HashMap::with_capacity_and_hasher(saved.joints.len(), IdHasher::default());
+        let mut rapier_joints = 0;
+        for (i, joint) in saved.joints.iter().enumerate() {
+            let (Some(&a), Some(&b)) = (index.get(&joint.a), index.get(&joint.b)) else {
+                return inconsistent("a joint names a node that is missing");
+            };
+            let (sa, sb) = (&saved.slots[a as usize], &saved.slots[b as usize]);
+            if super::slot::joint_key(sa.serial, sb.serial) != joint.key {
+                return inconsistent("a joint's key does not name its nodes");
+            }
+            if let Some(handle) = joint.handle {
+                if saved.impulse_joints.get(handle).is_none() {
+                    return inconsistent("a joint's rapier joint is missing");
+                }
+                rapier_joints += 1;
+            }
+            if joint_index.insert(joint.key, i as u32).is_some() {
+                return inconsistent("a joint is repeated");
+            }
+        }
+        if saved.impulse_joints.len() != rapier_joints
+            || saved.multibody_joints.multibodies().next().is_some()
+        {
+            return inconsistent("joints that no edge owns");
+        }
+        let collector = (saved.options.collisions && saved.options.contact_events)
+            .then(CollisionCollector::default);
+        Ok(Self {
+            bodies: saved.bodies,
+            colliders: saved.colliders,
+            impulse_joints: saved.impulse_joints,
+            multibody_joints: saved.multibody_joints,
+            soft_bodies: saved.soft_bodies,
+            islands: saved.islands,
+            broad_phase: saved.broad_phase,
+            narrow_phase: saved.narrow_phase,
+            ccd_solver: saved.ccd_solver,
+            pipeline: PhysicsPipeline::new(),
+            params: saved.params,
+            slots: saved.slots,
+            index,
+            next_serial: saved.next_serial,
+            joints: saved.joints,
+            joint_index,
+            options: saved.options,
+            collector,
+            raw_events: Vec::new(),
+            events: saved.events,
+            dropped_events: saved.dropped_events,
+            recovered: saved.recovered,
+            topology_hash: saved.topology_hash,
+            spring_scale: saved.spring_scale,
+            stretch: StretchCache::default(),
+            joint_dt: saved.joint_dt,
+            version: saved.version,
+            spring_forces: saved.spring_forces,
+            touched: saved.touched,
+            ccd_off_once: saved.ccd_off_once,
+            contacts_enabled: saved.contacts_enabled,
+        })
+    }
+}
+
+impl<N> SavedWorld<N> {
+    /// How many nodes the world holds.
+    pub(crate) fn node_count(&self) -> usize {
+        self.slots.len()
+    }
+
+    /// How many edge joints the world holds.
+    pub(crate) fn joint_count(&self) -> usize {
+        self.joints.len()
+    }
+}

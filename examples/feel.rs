@@ -18,8 +18,9 @@
 //!   let go without motion. Printed: the speed it leaves with (its release-frame delta
 //!   over the frame time) against the pointer's last move.
 //!
-//! Run with `cargo run --release --example feel [--fast] [--default] [--whole-graph]
-//! [scene ...]` (`force_directed()` by default; `--fast`: `force_directed_fast()`;
+//! Run with `cargo run --release --example feel [--stress] [--fast] [--default]
+//! [--whole-graph] [scene ...]` (`force_directed()` by default; `--stress`:
+//! `RapierLayoutConfig::stress()`; `--fast`: `force_directed_fast()`;
 //! `--default`: the default configuration; `--whole-graph`: a disturbance reheats the
 //! whole layout, `Cooling::reheat_hops` `None`); scenes default to `les_miserables`,
 //! `karate` and `1138_bus`.
@@ -132,6 +133,8 @@ fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let config = if args.iter().any(|a| a == "--fast") {
         RapierLayoutConfig::force_directed_fast()
+    } else if args.iter().any(|a| a == "--stress") {
+        RapierLayoutConfig::stress()
     } else if args.iter().any(|a| a == "--default") {
         RapierLayoutConfig::default()
     } else {

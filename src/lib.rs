@@ -159,6 +159,7 @@ mod input;
 mod layout;
 pub mod quality;
 mod sanitize;
+mod stress;
 mod timestep;
 mod world;
 
@@ -171,7 +172,7 @@ pub use adapter::{LayoutSnapshot, RapierLayout, RapierLayoutState, REST_TIME};
 pub use config::cooling::Cooling;
 pub use config::{
     Accuracy, BodyKindPolicy, ContactModel, ContactSoftness, EdgeJoint, EdgeWeight, GroupForce,
-    RapierLayoutConfig, SolverSettings, SpringModel, TopologyUpdate,
+    RapierLayoutConfig, SolverSettings, SpringModel, StressModel, StressStart, TopologyUpdate,
 };
 pub use forces::barnes_hut::ManyBody;
 pub use forces::many_body::Repulsion;

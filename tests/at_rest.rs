@@ -53,8 +53,19 @@ fn a_saved_picture_comes_back_still() {
 
 #[test]
 fn a_drag_on_the_reopened_picture_moves_its_neighbourhood_only() {
-    let picture = saved_picture("1138_bus", RapierLayoutConfig::force_directed());
-    let mut host = reopened(&picture, RapierLayoutConfig::force_directed());
+    for config in [
+        RapierLayoutConfig::force_directed(),
+        RapierLayoutConfig::stress(),
+    ] {
+        drag_on_the_reopened_picture(config);
+    }
+}
+
+/// `1138_bus` laid out and reopened under `config`, its outermost leaf dragged 100 units
+/// and let go: its neighbour follows, the nodes three or more hops away stay.
+fn drag_on_the_reopened_picture(config: RapierLayoutConfig) {
+    let picture = saved_picture("1138_bus", config.clone());
+    let mut host = reopened(&picture, config);
     host.frame(FRAME);
     // The leaf farthest from the centre, dragged 100 units outward over 10 frames.
     let n = picture.nodes.len() as f32;

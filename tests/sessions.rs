@@ -120,25 +120,23 @@ fn config() -> impl Strategy<Value = RapierLayoutConfig> {
             Just(TopologyUpdate::Rebuild)
         ],
         any::<bool>(),
-        any::<bool>(),
+        0..3_u8,
     )
-        .prop_map(
-            |(edge_joint, topology_update, collisions, force_directed)| {
-                // The force-directed extras: many-body repulsion, springs shared by degree,
-                // a cooling schedule and firm contacts.
-                let base = if force_directed {
-                    RapierLayoutConfig::force_directed()
-                } else {
-                    RapierLayoutConfig::default()
-                };
-                RapierLayoutConfig {
-                    edge_joint,
-                    topology_update,
-                    collisions,
-                    ..base
-                }
-            },
-        )
+        .prop_map(|(edge_joint, topology_update, collisions, preset)| {
+            // The presets' extras: many-body repulsion, springs shared by degree, a
+            // cooling schedule and firm contacts; or the stress model.
+            let base = match preset {
+                0 => RapierLayoutConfig::default(),
+                1 => RapierLayoutConfig::force_directed(),
+                _ => RapierLayoutConfig::stress(),
+            };
+            RapierLayoutConfig {
+                edge_joint,
+                topology_update,
+                collisions,
+                ..base
+            }
+        })
 }
 
 /// The configurations of the long sessions: the default and the force-directed one,
@@ -148,6 +146,7 @@ fn long_config() -> impl Strategy<Value = RapierLayoutConfig> {
         Just(RapierLayoutConfig::default()),
         Just(RapierLayoutConfig::force_directed()),
         Just(RapierLayoutConfig::force_directed_fast()),
+        Just(RapierLayoutConfig::stress()),
     ]
 }
 

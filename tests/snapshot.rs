@@ -12,7 +12,9 @@ use graph_canvas_layout::{
     SnapshotError,
 };
 
-/// The configurations a snapshot must carry exactly: the default and every preset.
+/// The configurations a snapshot must carry exactly: the default and every preset (the
+/// stress one with its pivot terms held over 4 substeps, so a snapshot lands between
+/// two evaluations).
 fn configs() -> Vec<(&'static str, RapierLayoutConfig)> {
     vec![
         ("default", RapierLayoutConfig::default()),

@@ -1,6 +1,7 @@
 //! Seeded graph generators for scenes too large to ship as files, placed the way d3-force
 //! places nodes without positions (its phyllotaxis spiral, as the shipped random scenes
-//! are): a Barabási–Albert graph (hubs) and a uniform random graph. The same name gives
+//! are): a Barabási–Albert graph (hubs), a uniform random graph and a random geometric
+//! graph. The same name gives
 //! the same scene on every machine. Used by the benchmarks and the `quality` example.
 
 use graph_canvas_layout::euclid::default::Point2D;
@@ -89,13 +90,113 @@ pub fn random_graph(n: usize, e: usize, seed: u64) -> CanvasSceneInput<u32> {
     spiral(n, edges)
 }
 
-/// The generated scene a name stands for: `ba_n{N}_m{M}` or `random_n{N}_e{E}` (seed 1).
+/// A random geometric graph, as `scenes/rgg_10000.json` was built: `n` points uniform in
+/// a square, each joined to its 3 nearest neighbours, the largest component kept and
+/// renumbered in a random order, placed on d3's spiral. A proxy for road networks and
+/// meshes: a mesh-like graph of large diameter.
+pub fn random_geometric(n: usize, seed: u64) -> CanvasSceneInput<u32> {
+    let mut rng = Rng(seed);
+    let unit = |rng: &mut Rng| (rng.next() >> 11) as f64 / (1_u64 << 53) as f64;
+    let points: Vec<(f64, f64)> = (0..n).map(|_| (unit(&mut rng), unit(&mut rng))).collect();
+    // The 3 nearest by a uniform grid of about two points a cell, searched ring by ring.
+    let side = ((n as f64 / 2.0).sqrt().ceil() as usize).max(1);
+    let cell_of = |p: (f64, f64)| {
+        (
+            ((p.0 * side as f64) as usize).min(side - 1),
+            ((p.1 * side as f64) as usize).min(side - 1),
+        )
+    };
+    let mut cells = vec![Vec::new(); side * side];
+    for (i, &p) in points.iter().enumerate() {
+        let (cx, cy) = cell_of(p);
+        cells[cy * side + cx].push(i);
+    }
+    let mut edges = std::collections::BTreeSet::new();
+    for (i, &p) in points.iter().enumerate() {
+        let (cx, cy) = cell_of(p);
+        let mut best: Vec<(f64, usize)> = Vec::new();
+        for ring in 0..side {
+            let (lo_x, hi_x) = (cx.saturating_sub(ring), (cx + ring).min(side - 1));
+            let (lo_y, hi_y) = (cy.saturating_sub(ring), (cy + ring).min(side - 1));
+            for y in lo_y..=hi_y {
+                for x in lo_x..=hi_x {
+                    if x.abs_diff(cx) != ring && y.abs_diff(cy) != ring {
+                        continue;
+                    }
+                    for &j in &cells[y * side + x] {
+                        if j != i {
+                            let q = points[j];
+                            best.push(((p.0 - q.0).powi(2) + (p.1 - q.1).powi(2), j));
+                        }
+                    }
+                }
+            }
+            best.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+            best.truncate(3);
+            // Beyond this ring every point is at least `ring / side` away.
+            let reach = ring as f64 / side as f64;
+            if best.len() == 3 && best[2].0 <= reach * reach {
+                break;
+            }
+        }
+        for &(_, j) in &best {
+            edges.insert((i.min(j), i.max(j)));
+        }
+    }
+    // The largest component, renumbered at random.
+    let mut neighbours = vec![Vec::new(); n];
+    for &(a, b) in &edges {
+        neighbours[a].push(b);
+        neighbours[b].push(a);
+    }
+    let mut component = vec![usize::MAX; n];
+    let mut sizes = Vec::new();
+    for s in 0..n {
+        if component[s] != usize::MAX {
+            continue;
+        }
+        let c = sizes.len();
+        let (mut stack, mut size) = (vec![s], 0);
+        component[s] = c;
+        while let Some(u) = stack.pop() {
+            size += 1;
+            for &v in &neighbours[u] {
+                if component[v] == usize::MAX {
+                    component[v] = c;
+                    stack.push(v);
+                }
+            }
+        }
+        sizes.push(size);
+    }
+    let largest = (0..sizes.len())
+        .max_by_key(|&c| (sizes[c], usize::MAX - c))
+        .unwrap_or(0);
+    let mut kept: Vec<usize> = (0..n).filter(|&i| component[i] == largest).collect();
+    for k in (1..kept.len()).rev() {
+        kept.swap(k, rng.below(k + 1));
+    }
+    let mut number = vec![usize::MAX; n];
+    for (new, &old) in kept.iter().enumerate() {
+        number[old] = new;
+    }
+    let edges = edges
+        .into_iter()
+        .filter(|&(a, _)| component[a] == largest)
+        .map(|(a, b)| (number[a], number[b]))
+        .collect();
+    spiral(kept.len(), edges)
+}
+
+/// The generated scene a name stands for: `ba_n{N}_m{M}`, `random_n{N}_e{E}` or
+/// `rgg_n{N}` (seed 1).
 pub fn by_name(name: &str) -> Option<CanvasSceneInput<u32>> {
     let number = |s: &str, prefix: char| s.strip_prefix(prefix)?.parse::<usize>().ok();
     let parts: Vec<&str> = name.split('_').collect();
     match parts.as_slice() {
         ["ba", n, m] => Some(barabasi_albert(number(n, 'n')?, number(m, 'm')?, 1)),
         ["random", n, e] => Some(random_graph(number(n, 'n')?, number(e, 'e')?, 1)),
+        ["rgg", n] => Some(random_geometric(number(n, 'n')?, 1)),
         _ => None,
     }
 }

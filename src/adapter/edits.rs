@@ -40,7 +40,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         }
         let rebuild = self.config.topology_update == TopologyUpdate::Rebuild && !same_edges;
         if self.world.is_none() || rebuild {
-            self.build_world(scene, &topology);
+            self.build_world(scene, extras, &topology);
         } else {
             // Also a weight edit alone: its joints are re-tuned in place.
             self.patch_world(scene, extras, &topology);
@@ -57,7 +57,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
 
     /// A new world for `topology`. Nodes whose values are unusable this call keep their
     /// old body's position, and drags in progress survive, so a release still throws.
-    fn build_world(&mut self, scene: &CanvasSceneInput<N>, topology: &Topology) {
+    fn build_world(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+        topology: &Topology,
+    ) {
         let mut world = RapierSceneWorld::with_options(self.world_options());
         world.set_timestep(self.joint_dt);
         world.set_springs_as_forces(self.config.spring_model == SpringModel::Forces);
@@ -73,6 +78,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             Placement::Build(self.world.as_ref()),
             &mut Vec::new(),
         );
+        // NOTE: before the joints, which rest at the hop length it chooses.
+        let model = self.start_stress(&mut world, scene, topology, extras);
         let degrees = topology.degrees(scene.nodes.len());
         insert_joints(
             &mut world,
@@ -82,6 +89,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             &self.config,
             |_, _| {},
         );
+        if let (Some(model), Some(stress)) = (model, self.config.stress) {
+            let pivots = stress.pivot_count(world.slot_count());
+            self.forces
+                .stress
+                .adopt(&world, model, pivots, stress.exact_hops.max(1));
+        }
         // A new world starts again: every body at rest where the host has it.
         self.disturbances.reset();
         self.disturbances.touch_everything();
@@ -202,10 +215,15 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         );
         // Springs whose ends changed degree take their new share, and edges whose weight
         // changed their new strength or length.
+        let hop = world.hop_length();
         world.retune_edge_joints(|a, b| match (index_of.get(a), index_of.get(b)) {
-            (Some(&x), Some(&y)) => {
-                edge_joint_for(config, degrees[x], degrees[y], weight(a, b).unwrap_or(1.0))
-            }
+            (Some(&x), Some(&y)) => edge_joint_for(
+                config,
+                hop,
+                degrees[x],
+                degrees[y],
+                weight(a, b).unwrap_or(1.0),
+            ),
             _ => config.edge_joint,
         });
         // In scene order (never the set's): wakes reach rapier in this order.
@@ -277,8 +295,15 @@ fn insert_missing_nodes<N: Clone + Eq + Hash>(
         let (start, seated) = match &mut placement {
             Placement::Build(_) => (spread.place(position), false),
             Placement::Patch(seating, held) => {
-                let seating =
-                    seating.get_or_insert_with(|| Seating::new(world, config.edge_length()));
+                let seating = seating.get_or_insert_with(|| {
+                    Seating::new(
+                        world,
+                        world
+                            .hop_length()
+                            .filter(|_| config.stress.is_some())
+                            .unwrap_or_else(|| config.edge_length()),
+                    )
+                });
                 if held(&node.id) {
                     seating.occupy(position, radius_of(config, node));
                     (position, false)
@@ -346,7 +371,7 @@ fn insert_joints<N: Clone + Eq + Hash>(
     world.reserve_joints(topology.edges.len().saturating_sub(world.joint_count()));
     for (&(a, b), &weight) in topology.edges.iter().zip(&topology.weights) {
         let (ia, ib) = (&scene.nodes[a].id, &scene.nodes[b].id);
-        let kind = edge_joint_for(config, degrees[a], degrees[b], weight);
+        let kind = edge_joint_for(config, world.hop_length(), degrees[a], degrees[b], weight);
         if world.insert_weighted_edge_joint(ia, ib, &kind, weight) {
             joined(ia, ib);
         }
@@ -385,16 +410,36 @@ fn binding_for<N: Clone>(
 
 /// The joint `config` gives an edge of weight `weight` whose ends have `da` and `db`
 /// distinct neighbours: [`RapierLayoutConfig::edge_joint`], with a spring's stiffness
-/// and damping divided by `min(da, db)^exponent`
+/// and damping divided by `min(da, db)^exponent` and, in a stress layout, its rest
+/// length the world's hop length `hop`
 /// ([`RapierLayoutConfig::spring_degree_exponent`]; unusable exponents count as 0), then
 /// weighted as [`RapierLayoutConfig::edge_weight`] says.
-fn edge_joint_for(config: &RapierLayoutConfig, da: u32, db: u32, weight: f32) -> EdgeJoint {
+fn edge_joint_for(
+    config: &RapierLayoutConfig,
+    hop: Option<f32>,
+    da: u32,
+    db: u32,
+    weight: f32,
+) -> EdgeJoint {
+    let base = match (config.edge_joint, hop.filter(|_| config.stress.is_some())) {
+        (
+            EdgeJoint::Spring {
+                stiffness, damping, ..
+            },
+            Some(rest_length),
+        ) => EdgeJoint::Spring {
+            rest_length,
+            stiffness,
+            damping,
+        },
+        (joint, _) => joint,
+    };
     let shared = match degree_exponent(config) {
         Some(exponent) => {
             let share = (da.min(db).max(1) as f32).powf(exponent);
-            scaled_spring(&config.edge_joint, |x| x / share)
+            scaled_spring(&base, |x| x / share)
         }
-        None => config.edge_joint,
+        None => base,
     };
     shared.weighted(weight, config.edge_weight)
 }

@@ -16,11 +16,13 @@ pub(crate) mod edge_joint;
 pub(crate) mod groups;
 mod presets;
 pub(crate) mod solver;
+pub(crate) mod stress;
 
 use cooling::Cooling;
 pub use edge_joint::{BodyKindPolicy, EdgeJoint, EdgeWeight, SpringModel};
 pub use groups::GroupForce;
 pub use solver::{Accuracy, ContactModel, ContactSoftness, SolverSettings};
+pub use stress::{StressModel, StressStart};
 
 /// What to do when the topology hash changes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -183,6 +185,13 @@ pub struct RapierLayoutConfig {
     /// hold together and keep apart ([`GroupForce`]). Does nothing while no node has a
     /// group. Default: [`GroupForce::default`].
     pub groups: GroupForce,
+    /// The stress model: every two nodes pulled toward their graph distance (the best
+    /// layouts of a graph's structure are those of least stress), with a global start
+    /// that is already such a layout ([`StressModel`]). `None` for edges and the other
+    /// forces alone. Costs a pass over each node's exact and pivot terms per substep
+    /// (O(n·(pivots + exact terms))) and hop distances from every pivot when the graph
+    /// changes. Default: `None` ([`RapierLayoutConfig::stress`] turns it on).
+    pub stress: Option<StressModel>,
 }
 
 impl RapierLayoutConfig {
@@ -194,6 +203,15 @@ impl RapierLayoutConfig {
             EdgeJoint::Rope { max_length, .. } => max_length,
             EdgeJoint::Distance { length } => length,
             EdgeJoint::None => 2.0 * self.default_radius,
+        }
+    }
+
+    /// The stiffness of an edge spring as configured (0 for other joints): what the
+    /// stress model's terms are measured against.
+    pub(crate) fn edge_stiffness(&self) -> f32 {
+        match self.edge_joint {
+            EdgeJoint::Spring { stiffness, .. } if stiffness.is_finite() => stiffness.max(0.0),
+            _ => 0.0,
         }
     }
 
@@ -236,6 +254,7 @@ impl Default for RapierLayoutConfig {
             link_bias: 0.0,
             flight_damping: None,
             groups: GroupForce::default(),
+            stress: None,
         }
     }
 }

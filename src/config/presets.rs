@@ -5,6 +5,7 @@
 use crate::config::cooling::Cooling;
 use crate::config::edge_joint::{EdgeJoint, SpringModel};
 use crate::config::solver::{Accuracy, ContactModel, ContactSoftness};
+use crate::config::stress::StressModel;
 use crate::config::RapierLayoutConfig;
 use crate::forces::many_body::Repulsion;
 use crate::world::bindings::PhysicsMaterial;
@@ -147,6 +148,55 @@ impl RapierLayoutConfig {
                 ..cooling
             }),
             accuracy: Accuracy::Fast,
+            ..directed
+        }
+    }
+
+    /// A configuration that draws the graph's structure: the stress model
+    /// ([`StressModel`]) inside the physics, from a start that is already a layout.
+    ///
+    /// Every two nodes are kept near their graph distance, as stress majorization
+    /// (Graphviz neato) and stress SGD (the lowest stress any published method reaches)
+    /// keep them: meshes and grids come out flat, trees spread, power networks show their
+    /// branches. The first world starts from a global layout (pivot MDS refined by stress
+    /// SGD passes, components packed), so the first frame shows the graph's shape and the
+    /// physics refines it; drags, throws, pins, per-node forces, contacts and local heat
+    /// work as under [`force_directed`](Self::force_directed):
+    /// - edge springs of stiffness 7,200 resting at the hop length (at least 100 units,
+    ///   longer where the nodes' disks need room: [`StressModel::fit_length`]), solved as
+    ///   forces of the layout's own, and the stress terms beside them, 200 pivots
+    ///   (the full stress for components of up to 200 nodes), exact terms within two hops;
+    /// - no many-body repulsion: stress spreads the graph itself;
+    /// - the layout's own disk separation at 240 Hz, ζ = 1, from the first frame;
+    /// - a 2 s cooling schedule that scales every stress term with the heat (their balance
+    ///   stays the same while the push toward it fades), local reheat (one hop), a thrown
+    ///   node coasting at 1 % of its springs' strength and damped at 1/s until it turns;
+    /// - linear damping 20 per second, one solver iteration of three passes.
+    ///
+    /// The README's quality table gives its stress against neato, sfdp and stress SGD,
+    /// its frames to rest and step times, and the trade of pivots against them.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::RapierLayoutConfig;
+    /// let config = RapierLayoutConfig::stress();
+    /// assert!(config.stress.is_some() && config.repulsion.is_none());
+    /// ```
+    pub fn stress() -> Self {
+        let directed = Self::force_directed();
+        Self {
+            repulsion: None,
+            spring_degree_exponent: 0.0,
+            link_bias: 0.0,
+            cooling: directed.cooling.map(|cooling| Cooling {
+                duration: 2.0,
+                spring_exponent: 1.0,
+                stretch_limit: None,
+                hot_contact_frequency: None,
+                coasting_spring_scale: 0.003,
+                ..cooling
+            }),
+            stress: Some(StressModel::default()),
             ..directed
         }
     }

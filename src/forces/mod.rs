@@ -40,6 +40,7 @@ pub(crate) mod many_body;
 mod position;
 mod radial;
 mod springs;
+pub(crate) mod stress;
 pub(crate) mod targets;
 
 use targets::NodeTargets;
@@ -187,6 +188,9 @@ pub(crate) struct Forces<N> {
     bodies: Bodies,
     sums: ForceSums,
     collide: collide::Collide,
+    /// The stress model's terms ([`RapierLayoutConfig::stress`]), kept apart from the
+    /// list: the start hands it the model it built.
+    pub(crate) stress: stress::StressForce,
     /// The host's per-node forces for this call (`adapter/node_forces.rs` fills it).
     pub(crate) targets: NodeTargets,
     /// Whether the last substep set forces on bodies: rapier keeps a body's force until
@@ -211,6 +215,7 @@ impl<N: Clone + Eq + Hash> Default for Forces<N> {
             bodies: Bodies::default(),
             sums: ForceSums::default(),
             collide: collide::Collide::default(),
+            stress: stress::StressForce::default(),
             targets: NodeTargets::default(),
             applied: false,
         }
@@ -226,15 +231,18 @@ impl<N> std::fmt::Debug for Forces<N> {
 }
 
 /// What the forces carry from one call to the next, as a snapshot keeps it: the host's
-/// per-node forces as the last call read them, whether forces are on the bodies, and the
-/// disk separation's warm-start impulses. Everything else they keep is a cache built
-/// again from the world.
+/// per-node forces as the last call read them, whether forces are on the bodies, the
+/// disk separation's warm-start impulses and the stress model with its held pivot sums.
+/// Everything else they keep is a cache built again from the world.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub(crate) struct SavedForces {
     targets: NodeTargets,
     applied: bool,
     contacts: Vec<(u32, u32, f32)>,
     contacts_version: Option<u64>,
+    /// The stress model and its pivot terms' held sums (empty without one).
+    #[serde(default)]
+    stress: stress::StressForce,
 }
 
 impl<N: Clone + Eq + Hash> Forces<N> {
@@ -246,6 +254,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             applied: self.applied,
             contacts,
             contacts_version,
+            stress: self.stress.clone(),
         }
     }
 
@@ -254,6 +263,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         let mut forces = Self {
             targets: saved.targets,
             applied: saved.applied,
+            stress: saved.stress,
             ..Self::default()
         };
         forces
@@ -266,6 +276,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
     /// separation.
     pub(crate) fn any_active(&self, config: &RapierLayoutConfig) -> bool {
         config.separates_disks()
+            || config.stress.is_some()
             || self
                 .list
                 .iter()
@@ -294,6 +305,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         for force in &mut self.list {
             force.reset();
         }
+        BodyForce::<N>::reset(&mut self.stress);
     }
 
     /// Sets every awake dynamic body's force to the sum of the active forces at `heat`
@@ -337,6 +349,9 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             if force.is_active(config, &self.targets) {
                 force.apply(&frame, &mut self.sums);
             }
+        }
+        if BodyForce::<N>::is_active(&self.stress, config, &self.targets) {
+            self.stress.apply(&frame, &mut self.sums);
         }
         for (s, f) in self.sums.forces.iter_mut().enumerate() {
             if !self.bodies.pushed[s] {

@@ -155,6 +155,9 @@ pub struct RapierSceneWorld<N> {
     /// Whether colliders take part in the simulation (see
     /// [`set_contacts_enabled`](RapierSceneWorld::set_contacts_enabled)).
     contacts_enabled: bool,
+    /// The length of a hop a stress layout chose for this world (edge springs rest at
+    /// it), if any.
+    hop_length: Option<f32>,
 }
 
 impl<N: Clone + Eq + Hash> Default for RapierSceneWorld<N> {
@@ -234,6 +237,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             spring_forces: false,
             touched: false,
             ccd_off_once: false,
+            hop_length: None,
         }
     }
 
@@ -318,6 +322,21 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// Number of slots (one per body), the length of every per-slot buffer.
     pub(crate) fn slot_count(&self) -> usize {
         self.slots.len()
+    }
+
+    /// The serial of the node in `slot` (never reused).
+    pub(crate) fn serial_at(&self, slot: usize) -> u64 {
+        self.slots[slot].serial
+    }
+
+    /// The length of a hop a stress layout chose for this world.
+    pub(crate) fn hop_length(&self) -> Option<f32> {
+        self.hop_length
+    }
+
+    /// Records the length of a hop chosen for this world.
+    pub(crate) fn set_hop_length(&mut self, length: f32) {
+        self.hop_length = Some(length);
     }
 
     pub(crate) fn position_at(&self, slot: usize) -> Point2D<f32> {

@@ -50,6 +50,8 @@ pub(crate) struct SavedWorld<N> {
     touched: bool,
     ccd_off_once: bool,
     contacts_enabled: bool,
+    #[serde(default)]
+    hop_length: Option<f32>,
 }
 
 impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
@@ -81,6 +83,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             touched: self.touched,
             ccd_off_once: self.ccd_off_once,
             contacts_enabled: self.contacts_enabled,
+            hop_length: self.hop_length,
         }
     }
 
@@ -184,6 +187,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             touched: saved.touched,
             ccd_off_once: saved.ccd_off_once,
             contacts_enabled: saved.contacts_enabled,
+            hop_length: saved.hop_length,
         })
     }
 }

@@ -1,0 +1,299 @@
+//! The stress model's pull ([`StressModel`](crate::StressModel)): every node kept at its
+//! graph distance from the nodes near it and from its component's pivots, by springs of
+//! rest length `hops × hop length` and stiffness `edge stiffness × weight` (`1 / hops²`
+//! for exact terms, `s / hops²` for a pivot standing for `s` nodes; `stress/model.rs`).
+//! The edges themselves are the world's springs (`springs.rs`). Each term pulls its own
+//! node only, and reports its stiffness, so `Forces::apply` takes an implicit step on it
+//! as on the springs: stable at any stiffness. The terms scale with the world's spring
+//! scale (the heat), so the balance they rest at is the same at every heat.
+//!
+//! The model is built from the world's joints (hop distances by breadth-first search
+//! from every pivot) and built again when the graph's nodes or edges change.
+
+use std::hash::Hash;
+
+use euclid::default::{Point2D, Vector2D};
+
+use super::targets::NodeTargets;
+use super::{BodyForce, ForceContext, ForceSums};
+use sums::{padded, pivot_pull};
+
+mod sums;
+use crate::config::RapierLayoutConfig;
+use crate::stress::graph::Graph;
+use crate::stress::model::{Reach, SparseStress};
+use crate::world::RapierSceneWorld;
+
+/// The stress terms of a world, and the pivot terms' last sums.
+#[derive(Clone, Debug, Default, serde::Serialize, serde::Deserialize)]
+pub(crate) struct StressForce {
+    /// The world version the model was checked against (a restored force checks it
+    /// again), and the shape it was built for (a hash of node serials in slot order and
+    /// of the joints), with its settings.
+    #[serde(skip)]
+    version: Option<u64>,
+    shape: Shape,
+    model: SparseStress,
+    /// Per slot, the pivot terms' force and stiffness as last worked out, and the
+    /// substeps since.
+    pivot_force: Vec<Vector2D<f32>>,
+    pivot_stiffness: Vec<f32>,
+    pivot_at: Vec<Point2D<f32>>,
+    since: u32,
+    /// The pivots' positions, by pivot, gathered once a substep.
+    #[serde(skip)]
+    xs: Vec<f32>,
+    #[serde(skip)]
+    ys: Vec<f32>,
+    /// Where each component's pivots start in `xs` and `ys`.
+    #[serde(skip)]
+    pivot_start: Vec<usize>,
+    /// One node's distances to its pivots and their weights, gathered before its sum.
+    #[serde(skip)]
+    hops: Vec<f32>,
+    #[serde(skip)]
+    weights: Vec<f32>,
+}
+
+impl StressForce {
+    /// Gives the force a model already built for `world` (the start's), so the first
+    /// substep does not build it again.
+    pub(crate) fn adopt<N: Clone + Eq + Hash>(
+        &mut self,
+        world: &RapierSceneWorld<N>,
+        model: SparseStress,
+        pivots: usize,
+        exact_hops: u16,
+    ) {
+        self.version = Some(world.version());
+        self.shape = Shape::of(world, pivots, exact_hops);
+        self.model = model;
+        self.pivot_force.clear();
+        self.since = 0;
+    }
+
+    /// The model up to date with `world` for these settings: kept while the graph is
+    /// the same, extended when leaves were added (a leaf changes no other pair's
+    /// distance: its hops are its neighbour's plus one), built again otherwise.
+    fn refresh<N: Clone + Eq + Hash>(
+        &mut self,
+        world: &RapierSceneWorld<N>,
+        pivots: usize,
+        exact_hops: u16,
+    ) {
+        let settings = (pivots, exact_hops);
+        if self.version == Some(world.version()) && self.shape.settings == settings {
+            return;
+        }
+        self.version = Some(world.version());
+        let shape = Shape::of(world, pivots, exact_hops);
+        if shape == self.shape {
+            return;
+        }
+        let graph = graph_of(world);
+        match self.shape.added_leaves(&shape) {
+            Some(leaves) => {
+                let mut reach = Reach::new(graph.len());
+                for (leaf, parent) in leaves {
+                    self.model.add_leaf(&graph, leaf, parent, &mut reach);
+                }
+            }
+            None => self.model = SparseStress::new(&graph, pivots, exact_hops),
+        }
+        self.shape = shape;
+        self.pivot_force.clear();
+        self.since = 0;
+    }
+}
+
+/// What the model was built for: the nodes (by serial, in slot order), the joints (by
+/// slot, in joint order) and the settings.
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
+struct Shape {
+    serials: Vec<u64>,
+    joints: Vec<(u32, u32)>,
+    settings: (usize, u16),
+}
+
+impl Shape {
+    fn of<N: Clone + Eq + Hash>(world: &RapierSceneWorld<N>, pivots: usize, hops: u16) -> Self {
+        Self {
+            serials: (0..world.slot_count())
+                .map(|s| world.serial_at(s))
+                .collect(),
+            joints: world
+                .joint_ends()
+                .map(|(a, b)| (a as u32, b as u32))
+                .collect(),
+            settings: (pivots, hops),
+        }
+    }
+
+    /// When `now` is this shape with leaves added (new nodes after the old ones, each
+    /// joined by one new joint to a node before it, the old joints as they were), the
+    /// leaves and their parents in slot order.
+    fn added_leaves(&self, now: &Shape) -> Option<Vec<(usize, usize)>> {
+        let old = self.serials.len();
+        if self.settings != now.settings
+            || self.serials.is_empty()
+            || now.serials.len() <= old
+            || now.serials[..old] != self.serials[..]
+            || now.joints.len() != self.joints.len() + (now.serials.len() - old)
+            || now.joints[..self.joints.len()] != self.joints[..]
+        {
+            return None;
+        }
+        let mut parent = vec![usize::MAX; now.serials.len() - old];
+        for &(a, b) in &now.joints[self.joints.len()..] {
+            let (leaf, other) = (a.max(b) as usize, a.min(b) as usize);
+            if leaf < old || parent[leaf - old] != usize::MAX {
+                return None;
+            }
+            parent[leaf - old] = other;
+        }
+        parent
+            .into_iter()
+            .enumerate()
+            .map(|(k, p)| (p != usize::MAX).then_some((old + k, p)))
+            .collect()
+    }
+}
+
+/// The world's joint graph, by slot.
+pub(crate) fn graph_of<N: Clone + Eq + Hash>(world: &RapierSceneWorld<N>) -> Graph {
+    let edges: Vec<(usize, usize)> = world.joint_ends().collect();
+    Graph::new(world.slot_count(), edges.iter().copied())
+}
+
+impl<N: Clone + Eq + Hash> BodyForce<N> for StressForce {
+    fn is_active(&self, config: &RapierLayoutConfig, _: &NodeTargets) -> bool {
+        config.stress.is_some()
+    }
+
+    fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
+        let Some(stress) = frame.config.stress else {
+            return;
+        };
+        let exact_hops = stress.exact_hops.max(1);
+        self.refresh(
+            frame.world,
+            stress.pivot_count(frame.world.slot_count()),
+            exact_hops,
+        );
+        let n = frame.points.len();
+        let hop = frame.world.hop_length().unwrap_or(stress.hop_length);
+        let k = frame.config.edge_stiffness() * frame.world.applied_spring_scale();
+        if !(k > 0.0 && k.is_finite() && hop > 0.0 && hop.is_finite()) {
+            return;
+        }
+        let dt2 = frame.dt * frame.dt;
+        let period = stress.pivot_period.max(1);
+        let fresh = self.pivot_force.len() != n || self.since % period == 0;
+        if fresh {
+            self.pivot_force.clear();
+            self.pivot_force.resize(n, Vector2D::zero());
+            self.pivot_stiffness.clear();
+            self.pivot_stiffness.resize(n, 0.0);
+            self.pivot_at.clear();
+            self.pivot_at.resize(n, Point2D::origin());
+        }
+        self.since = self.since.wrapping_add(1);
+        if fresh {
+            // Each component's pivots' positions, padded to whole lanes.
+            self.xs.clear();
+            self.ys.clear();
+            self.pivot_start.clear();
+            for &(a, b) in &self.model.pivot_range {
+                self.pivot_start.push(self.xs.len());
+                for &q in &self.model.pivots[a as usize..b as usize] {
+                    let point = frame.points[q as usize];
+                    self.xs.push(point.x);
+                    self.ys.push(point.y);
+                }
+                let width = self.pivot_start.last().map_or(0, |&s| s) + padded((b - a) as usize);
+                self.xs.resize(width, 0.0);
+                self.ys.resize(width, 0.0);
+            }
+        }
+        let model = &self.model;
+        for i in 0..n.min(model.component.len()) {
+            if !frame.pushed[i] {
+                continue;
+            }
+            let p = frame.points[i];
+            let (mut f, mut stiffness) = (Vector2D::zero(), 0.0_f32);
+            let (near, near_hops) = model.near_terms_of(i);
+            let scale = model.near_scale[i];
+            for (&j, &d) in near.iter().zip(near_hops) {
+                let d = f32::from(d);
+                let w = scale / (d * d);
+                f += pull(p, frame.points[j as usize], hop * d, k * w);
+                stiffness += k * w;
+            }
+            if fresh {
+                let c = model.component[i] as usize;
+                let (a, b) = model.pivot_range[c];
+                let width = padded((b - a) as usize);
+                let start = self.pivot_start[c];
+                let (xs, ys) = (
+                    &self.xs[start..start + width],
+                    &self.ys[start..start + width],
+                );
+                let (_, hops) = model.pivot_terms(i);
+                // The node's distances and weights, padded to whole lanes.
+                self.hops.clear();
+                self.weights.clear();
+                if model.full[c] {
+                    for &d in hops {
+                        let d = f32::from(d);
+                        self.hops.push(d);
+                        self.weights
+                            .push(if d >= 2.0 { 1.0 / (d * d) } else { 0.0 });
+                    }
+                } else {
+                    let stride = model.stride[c] as usize;
+                    let tables = model.component_weights(c);
+                    for (t, &d) in hops.iter().enumerate() {
+                        self.hops.push(f32::from(d));
+                        self.weights
+                            .push(tables[t * stride + (d as usize).min(stride - 1)]);
+                    }
+                }
+                self.hops.resize(width, 0.0);
+                self.weights.resize(width, 0.0);
+                let pull = pivot_pull((p.x, p.y), xs, ys, &self.hops, &self.weights, hop, k);
+                self.pivot_force[i] = Vector2D::new(pull.x, pull.y);
+                self.pivot_stiffness[i] = pull.stiffness;
+                self.pivot_at[i] = p;
+            }
+            // Held between evaluations as its first-order model about where it was worked
+            // out: the force less the stiffness times the way moved since (what the
+            // implicit step assumes of it), so a held force does not push a node past
+            // its balance.
+            let moved = p - self.pivot_at[i];
+            f += self.pivot_force[i] - moved * self.pivot_stiffness[i];
+            stiffness += self.pivot_stiffness[i];
+            if f.is_finite() && stiffness.is_finite() {
+                out.springs[i] += f;
+                out.resistance[i] += dt2 * stiffness;
+            }
+        }
+    }
+
+    fn reset(&mut self) {
+        // A new world counts its versions from 0 again.
+        *self = Self::default();
+    }
+}
+
+/// The pull on a node at `p` of a spring of stiffness `k` and rest length `rest` to `q`.
+#[inline]
+fn pull(p: Point2D<f32>, q: Point2D<f32>, rest: f32, k: f32) -> Vector2D<f32> {
+    let d = q - p;
+    let length = d.length();
+    if length > 1e-3 {
+        d * (k * (length - rest) / length)
+    } else {
+        Vector2D::zero()
+    }
+}

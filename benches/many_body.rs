@@ -16,7 +16,7 @@ use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{ManyBody, Repulsion};
 
 /// The mean relative error of `forces` against the exact sum on 16 points spread over
-/// the scene: the README gives 0.56-0.59 % at theta 0.9 for these sizes, so 2 % is
+/// the scene: docs/performance.md gives 0.56-0.59 % at theta 0.9 for these sizes, so 2 % is
 /// a pass gone wrong, not noise.
 fn mean_error(tree: &mut ManyBody, forces: &[Vector2D<f32>], r: &Repulsion) -> f32 {
     let n = forces.len();
@@ -52,7 +52,7 @@ fn passes(c: &mut Criterion) {
         let error = mean_error(&mut tree, &out, &r);
         assert!(
             error < 0.02,
-            "{name}: mean relative error {error} against the exact sum (README: under 0.6 %)"
+            "{name}: mean relative error {error} against the exact sum (docs/performance.md: under 0.6 %)"
         );
     }
 }

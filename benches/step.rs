@@ -215,7 +215,12 @@ fn topology_check(c: &mut Criterion) {
 fn headline(c: &mut Criterion) {
     persistent(c, "n200_e500", RapierLayoutConfig::default(), "persistent");
     bare(c, "n200_e500", BareModel::Layout, "rapier_floor");
-    bare(c, "n200_e500", BareModel::Plan, "plan_model_floor");
+    bare(
+        c,
+        "n200_e500",
+        BareModel::RotatingEvents,
+        "rotating_events_floor",
+    );
     // What each modelling choice saves.
     bare(
         c,
@@ -253,8 +258,15 @@ fn presets(c: &mut Criterion) {
 }
 
 /// `force_directed()` (repulsion, shared and biased springs, contacts, cooling) while
-/// the graph unfolds: d3-force's tick on the same scenes is the yardstick (README).
+/// the graph unfolds: d3-force's tick on the same scenes is the yardstick (docs/performance.md).
 fn force_directed(c: &mut Criterion) {
+    first_frames(
+        c,
+        "1138_bus",
+        RapierLayoutConfig::stress(),
+        150,
+        "stress_first_150",
+    );
     for name in ["n200_e500", "n1000_e2500"] {
         persistent(
             c,
@@ -298,6 +310,17 @@ fn large(c: &mut Criterion) {
         RapierLayoutConfig::force_directed(),
         "force_directed",
     );
+    // The stress model: the first 150 frames, start included (its graphs rest within
+    // them): the flat-out wall time to rest that docs/quality.md sets beside sfdp's.
+    for name in ["3elt", "rgg_10000", "n10000_e25000"] {
+        first_frames(
+            c,
+            name,
+            RapierLayoutConfig::stress(),
+            150,
+            "stress_first_150",
+        );
+    }
     // Hubs: Barabási–Albert, 10,000 nodes, m = 2, on d3's spiral.
     persistent(
         c,
@@ -320,7 +343,13 @@ fn large(c: &mut Criterion) {
         };
         persistent_from(c, name, start.clone(), fast, "persistent_fast");
         bare_from(c, name, &start, BareModel::Layout, "rapier_floor");
-        bare_from(c, name, &start, BareModel::Plan, "plan_model_floor");
+        bare_from(
+            c,
+            name,
+            &start,
+            BareModel::RotatingEvents,
+            "rotating_events_floor",
+        );
     }
 }
 
@@ -330,7 +359,8 @@ criterion_group! {
     targets = headline, presets, force_directed, scaling
 }
 /// The first 60 frames of a random graph of 100,000 nodes and 250,000 edges (seeded,
-/// on d3's spiral): the README sets their mean beside d3-force's tick.
+/// on d3's spiral): docs/performance.md sets their mean beside d3-force's tick. And the stress
+/// model's first frame on it and on a random geometric graph of 100,000 nodes.
 fn huge(c: &mut Criterion) {
     first_frames(
         c,
@@ -339,6 +369,16 @@ fn huge(c: &mut Criterion) {
         60,
         "force_directed_first_60",
     );
+    // The stress model's first frame, the global start included.
+    for name in ["random_n100000_e250000", "rgg_n100000"] {
+        first_frames(
+            c,
+            name,
+            RapierLayoutConfig::stress(),
+            1,
+            "stress_first_frame",
+        );
+    }
 }
 
 criterion_group! {

@@ -406,4 +406,18 @@ fn main() {
         s.frame(FRAME);
     }
     report("reconfigured", &s);
+    // The stress model (after the sessions above, which keep their order).
+    report(
+        "rest/les_miserables/stress",
+        &to_rest_and_throw("les_miserables", RapierLayoutConfig::stress(), 1200),
+    );
+    for seed in [1_u64, 2, 3] {
+        let s = random(
+            RapierLayoutConfig::stress(),
+            seed * 0x9e37_79b9_7f4a_7c15,
+            1500,
+            24,
+        );
+        report(&format!("random/stress/seed{seed}"), &s);
+    }
 }

@@ -6,14 +6,14 @@
 //! Run with `cargo run --release --example quality [--fast | --default] [--starts N]
 //! [--duration S] [--frames N] [--leave-out SETTING] [--write-scenes] [scene ...]`:
 //! - `--fast`: `RapierLayoutConfig::force_directed_fast()`;
-//! - `--default`: `RapierLayoutConfig::default()` (no repulsion: for the README's preset
-//!   table, with `--frames 300`);
+//! - `--default`: `RapierLayoutConfig::default()` (no repulsion, packing a graph into a
+//!   blob; with `--frames 300` for `docs/performance.md`);
 //! - `--duration S`: a cooling schedule of `S` seconds;
 //! - `--frames N`: stop after `N` frames (default 3,000), to time the first frames;
 //! - `--leave-out`: one of `spring_exponent`, `spring_degree_exponent`, `link_bias`,
 //!   `first_contact_heat`, `hot_contact_frequency`, `stretch_limit`, `accuracy`,
 //!   `contact_model`, `spring_model`, `reheat_hops`, `flight_damping` switched back to
-//!   d3's plain setting or the default configuration's, as in the README's table;
+//!   d3's plain setting or the default configuration's, as in `docs/performance.md`;
 //! - `--write-scenes`: also writes each scene to `target/scenes/<name>.json`, where the
 //!   d3 script finds the generated ones.
 //!

@@ -1,14 +1,17 @@
 //! Stress quality, measured: each scene laid out from its file to rest, flat out, with
 //! `RapierLayoutConfig::stress()` (or another configuration), and its normalised stress
-//! (`quality::normalized_stress`, the measure of the shared `stress.py`), frames and
+//! (`quality::normalized_stress`, the measure of `scripts/reference/stress.py`), frames and
 //! wall time to rest, the first frame's time (the start included), step times and
 //! overlapping disks at rest. Positions at rest are written to
 //! `target/stress/<scene>.json` (`{"positions": [[x, y], ...]}`, the scene's node
-//! order) for `stress.py` and pictures.
+//! order) for other tools to read.
 //!
 //! Run with `cargo run --release --example stress [--force-directed] [--pivots N|full]
-//! [--exact-hops H] [--period K] [--passes P] [--host-start] [--fixed-length]
-//! [--frames N] [scene ...]`; scenes default to the graphs with structure in `scenes/`.
+//! [--full-up-to N] [--exact-hops H] [--period K] [--passes P] [--host-start]
+//! [--fixed-length] [--contacts-at HEAT] [--duration S] [--frames N] [--svg]
+//! [--write-scene] [--edits] [scene ...]`; scenes default to the graphs with structure
+//! in `scenes/`. `--svg` draws each layout at rest to `target/stress/<scene>.svg`,
+//! `--write-scene` writes it as a scene file, `--edits` measures edits on it.
 
 use std::time::Instant;
 
@@ -44,6 +47,7 @@ fn main() {
     let mut max_frames = 1_000;
     let mut write_scene = false;
     let mut edits = false;
+    let mut pictures = false;
     let mut scenes: Vec<String> = Vec::new();
     let mut rest = args.iter();
     let value = |rest: &mut std::slice::Iter<String>, flag: &str| -> String {
@@ -78,6 +82,7 @@ fn main() {
             }
             "--write-scene" => write_scene = true,
             "--edits" => edits = true,
+            "--svg" => pictures = true,
             "--frames" => max_frames = value(&mut rest, arg).parse().expect("frames"),
             name => scenes.push(name.to_string()),
         }
@@ -95,7 +100,7 @@ fn main() {
     for name in &scenes {
         let scene = load(name);
         if write_scene {
-            // The scene file, for the reference tools (`shared/tools`).
+            // The scene file, for the reference tools (`scripts/reference`).
             let file = serde_json::json!({
                 "nodes": scene.nodes.iter().map(|n| serde_json::json!({"id": n.id, "x": n.position.x, "y": n.position.y, "radius": 16.0})).collect::<Vec<_>>(),
                 "edges": scene.edges.iter().map(|e| [e.source, e.target]).collect::<Vec<_>>(),
@@ -157,6 +162,19 @@ fn main() {
             serde_json::json!({ "positions": positions }).to_string(),
         )
         .expect("write positions");
+        if pictures {
+            let label = if config.stress.is_some() {
+                "stress()"
+            } else {
+                "force_directed()"
+            };
+            let title = format!("{name}: {label} at rest, normalised stress {stress:.3}");
+            std::fs::write(
+                format!("{}/target/stress/{name}.svg", env!("CARGO_MANIFEST_DIR")),
+                common::svg::svg(&host.scene, &title, &[], &[], |_| common::svg::BLUE),
+            )
+            .expect("write picture");
+        }
         if edits {
             edit_costs(name, &mut host);
         }

@@ -66,9 +66,9 @@ pub enum BareModel {
     Layout,
     /// `Layout` with disks free to rotate: what locking rotations saves.
     LayoutRotating,
-    /// The plan's model: disks free to rotate, colliders with collision events into
+    /// A plain rapier world: disks free to rotate, colliders with collision events into
     /// channels, spring joints, default integration parameters.
-    Plan,
+    RotatingEvents,
 }
 
 /// A bare rapier world for a scene, with nothing of the adapter around it.
@@ -89,7 +89,7 @@ impl Bare {
         let config = RapierLayoutConfig::default();
         let mut world = PhysicsWorld::new();
         world.gravity = Vector::ZERO;
-        if model != BareModel::Plan {
+        if model != BareModel::RotatingEvents {
             world.integration_parameters = IntegrationParameters {
                 length_unit: config.length_unit,
                 num_solver_iterations: config.accuracy.settings().0,
@@ -119,7 +119,7 @@ impl Bare {
                 BareModel::LayoutRotating => {
                     collider = collider.density(m.density);
                 }
-                BareModel::Plan => {
+                BareModel::RotatingEvents => {
                     collider = collider
                         .density(m.density)
                         .active_events(ActiveEvents::COLLISION_EVENTS);
@@ -154,7 +154,7 @@ impl Bare {
     pub fn step(&mut self) {
         match self.model {
             BareModel::Layout | BareModel::LayoutRotating => self.world.step(),
-            BareModel::Plan => {
+            BareModel::RotatingEvents => {
                 self.world.step_with_events(&(), &self.collector);
                 while self._receivers.0.try_recv().is_ok() {}
             }

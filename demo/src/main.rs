@@ -31,7 +31,7 @@ struct Demo {
     step_us: f32,
     zoom: f32,
     pan: egui::Vec2,
-    force_directed: bool,
+    preset: Preset,
     frames_left: Option<u64>,
 }
 
@@ -40,7 +40,7 @@ impl Demo {
         let next_id = scene.nodes.iter().map(|n| n.id).max().map_or(0, |m| m + 1);
         Self {
             scene,
-            layout: RapierLayout::new(RapierLayoutConfig::force_directed()),
+            layout: RapierLayout::new(RapierLayoutConfig::stress()),
             state: RapierLayoutState::default(),
             extras: LayoutExtras::default(),
             selected: None,
@@ -51,7 +51,7 @@ impl Demo {
             step_us: 0.0,
             zoom: 0.45,
             pan: egui::Vec2::ZERO,
-            force_directed: true,
+            preset: Preset::Stress,
             frames_left,
         }
     }
@@ -109,17 +109,19 @@ impl Demo {
             self.layout.patch_count()
         ));
         ui.separator();
-        if ui
-            .checkbox(&mut self.force_directed, "force-directed (repulsion)")
-            .changed()
-        {
+        ui.label("layout preset");
+        let before = self.preset;
+        for preset in Preset::ALL {
+            ui.radio_value(&mut self.preset, preset, preset.name());
+        }
+        if self.preset != before {
             // The preset's accuracy comes with it; the chosen joint stays.
             let keep = self.layout.config.edge_joint;
-            self.layout.config = preset(self.force_directed);
+            self.layout.config = self.preset.config();
             self.layout.config.edge_joint = keep;
         }
         ui.label("accuracy");
-        let preset_accuracy = preset(self.force_directed).accuracy;
+        let preset_accuracy = self.preset.config().accuracy;
         for (name, accuracy) in accuracy_choices(self.layout.config.accuracy, preset_accuracy) {
             ui.radio_value(&mut self.layout.config.accuracy, accuracy, name);
         }
@@ -286,12 +288,31 @@ impl eframe::App for Demo {
     }
 }
 
-/// The configuration of the force-directed preset or of the default one.
-fn preset(force_directed: bool) -> RapierLayoutConfig {
-    if force_directed {
-        RapierLayoutConfig::force_directed()
-    } else {
-        RapierLayoutConfig::default()
+/// The layout presets the demo offers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Preset {
+    Stress,
+    ForceDirected,
+    Default,
+}
+
+impl Preset {
+    const ALL: [Preset; 3] = [Preset::Stress, Preset::ForceDirected, Preset::Default];
+
+    fn name(self) -> &'static str {
+        match self {
+            Preset::Stress => "stress (graph distances)",
+            Preset::ForceDirected => "force-directed (repulsion)",
+            Preset::Default => "physical canvas (default)",
+        }
+    }
+
+    fn config(self) -> RapierLayoutConfig {
+        match self {
+            Preset::Stress => RapierLayoutConfig::stress(),
+            Preset::ForceDirected => RapierLayoutConfig::force_directed(),
+            Preset::Default => RapierLayoutConfig::default(),
+        }
     }
 }
 
@@ -403,12 +424,12 @@ mod tests {
 
     #[test]
     fn the_accuracy_in_force_is_always_a_choice() {
-        for force_directed in [false, true] {
-            let config = preset(force_directed);
+        for preset in Preset::ALL {
+            let config = preset.config();
             let choices = accuracy_choices(config.accuracy, config.accuracy);
             assert!(
                 choices.iter().any(|(_, a)| *a == config.accuracy),
-                "{:?} (force_directed {force_directed}) not among {choices:?}",
+                "{:?} ({preset:?}) not among {choices:?}",
                 config.accuracy
             );
         }
@@ -418,19 +439,19 @@ mod tests {
             internal_pgs_iterations: 1,
             substeps: 2,
         };
-        let choices = accuracy_choices(own, preset(true).accuracy);
+        let choices = accuracy_choices(own, Preset::ForceDirected.config().accuracy);
         assert_eq!(choices.len(), 5, "{choices:?}");
         assert!(choices.iter().any(|(_, a)| *a == own));
     }
 
     #[test]
     fn the_joint_in_force_is_always_a_choice() {
-        for force_directed in [false, true] {
-            let joint = preset(force_directed).edge_joint;
+        for preset in Preset::ALL {
+            let joint = preset.config().edge_joint;
             let choices = joint_choices(joint);
             assert!(
                 choices.iter().any(|(_, j)| *j == joint),
-                "{joint:?} (force_directed {force_directed}) not among {choices:?}"
+                "{joint:?} ({preset:?}) not among {choices:?}"
             );
         }
     }

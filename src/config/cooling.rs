@@ -42,7 +42,11 @@ pub struct Cooling {
     /// Simulated seconds from full heat (`alpha = 1`) to [`min_alpha`](Self::min_alpha),
     /// falling geometrically. Shorter settles sooner and leaves the layout further from
     /// its force equilibrium; longer gets closer to it and keeps it moving longer.
-    /// Default: `5.0` (d3-force's 300 ticks at 60 frames per second).
+    /// Default: `5.0` (d3-force's 300 ticks at 60 frames per second). The layout
+    /// presets set their own: `4.5` under
+    /// [`force_directed`](crate::RapierLayoutConfig::force_directed) (every shipped graph
+    /// at rest within d3's 300 ticks) and `2.0` under
+    /// [`stress`](crate::RapierLayoutConfig::stress) (its start is already a layout).
     pub duration: f32,
     /// The floor of the heat: at it, forces are this fraction of their full strength,
     /// too weak to move anything against the material's damping. Default: `0.001`
@@ -57,8 +61,8 @@ pub struct Cooling {
     /// the same. Below 1 springs outlast repulsion as the layout cools and edges draw
     /// toward their rest length at the end: with the other
     /// [`force_directed`](crate::RapierLayoutConfig::force_directed) settings, 0.7 takes
-    /// `tree_1023`'s edge-length CV from 0.65 to 0.53 and `grid_30x30`'s from 0.30 to
-    /// 0.24 (ten-start means). The price is pressure: the final pull presses large
+    /// `tree_1023`'s edge-length CV from 0.56 to 0.44 and `grid_30x30`'s from 0.31 to
+    /// 0.25 (ten-start means, `docs/performance.md`). The price is pressure: the final pull presses large
     /// graphs together, so contacts are busier and need more than one solver pass to
     /// hold it, and a graph that cannot reach its rest lengths jams
     /// ([`stretch_limit`](Self::stretch_limit) lets such graphs out); lower exponents
@@ -108,8 +112,8 @@ pub struct Cooling {
     /// Later reheats (drags, edits, topology changes) keep contacts on, so an interaction
     /// never lets nodes pass through each other. The trade: a graph that starts without
     /// contacts untangles differently; with the other `force_directed()` settings,
-    /// `n200_e500`'s edge-length CV is 0.26 against 0.31 with contacts from the start,
-    /// and `tree_1023`'s 0.52 against 0.45. No contact events are reported while contacts
+    /// `n200_e500`'s edge-length CV is 0.26 against 0.35 with contacts from the start,
+    /// and `tree_1023`'s 0.44 against 0.48 (ten-start means, `docs/performance.md`). No contact events are reported while contacts
     /// are left out. Default: `None`
     /// ([`RapierLayoutConfig::force_directed`](crate::RapierLayoutConfig::force_directed)
     /// uses `0.3`).
@@ -138,7 +142,7 @@ pub struct Cooling {
     /// set to the heat at which springs have this share, and cools from there). Higher
     /// draws a throw back sooner and flies it less far; lower lets it coast further and
     /// come back more slowly, and too low leaves it where it landed when the schedule
-    /// ends. Measured on `les_miserables` and `karate` (README), throws of 1,800
+    /// ends. Measured on `les_miserables` and `karate` (`docs/feel.md`), throws of 1,800
     /// units/s: with `force_directed()`, 0.01 flies them 135 and 176 units on and
     /// draws them back at up to 540 units/s, 0.05 flies them 24 and 38 units and
     /// brings them back at up to 1,690; with `force_directed_fast()` (springs that fade

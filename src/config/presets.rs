@@ -65,11 +65,11 @@ impl RapierLayoutConfig {
     ///
     /// Every shipped graph comes to rest (every body asleep, or halted at the end of the
     /// schedule) within 300 frames of the last disturbance, with no overlapping pair on
-    /// the graphs of up to 1,000 nodes (README: edge-length spread, frames and step
-    /// times beside d3-force's). On `n10000_e25000` a step takes 10.5 ms at the median
-    /// and 14.4 ms at the 95th percentile, about a tenth of d3-force's tick in the same
-    /// session; [`force_directed_fast`](Self::force_directed_fast) takes 5.8 ms without
-    /// collisions.
+    /// the graphs of up to 1,000 nodes (`docs/quality.md`: edge-length spread, frames and step
+    /// times beside d3-force's). On `n10000_e25000` a step takes 11.75 ms at the median
+    /// and 15.55 ms at the 95th percentile, about a tenth of d3-force's tick in the same
+    /// session (`docs/performance.md`); [`force_directed_fast`](Self::force_directed_fast)
+    /// takes 5.87 ms without collisions.
     ///
     /// # Example
     /// ```
@@ -123,9 +123,9 @@ impl RapierLayoutConfig {
     /// Repulsion alone keeps nodes apart, so some overlap where springs pull hard (833
     /// pairs on `n1000_e2500`; d3-force leaves 347); the stiffer hub springs and the
     /// bias of `force_directed()` would press twice as many together without contacts.
-    /// In exchange there is no pair search: measured on `n10000_e25000` (README), 5.8 ms
-    /// per step at the median and 7.5 ms at the 95th percentile, where
-    /// `force_directed()` takes 10.5 and 14.4 ms in the same session. Its springs, fading
+    /// In exchange there is no pair search: measured on `n10000_e25000`
+    /// (`docs/performance.md`), 5.87 ms per step at the median and 7.75 ms at the 95th
+    /// percentile, where `force_directed()` takes 11.75 and 15.55 ms. Its springs, fading
     /// with the heat, are weak once the layout rests, so a thrown node's springs pull with 5 % of their
     /// strength ([`Cooling::coasting_spring_scale`]) to bring it back.
     ///
@@ -153,28 +153,35 @@ impl RapierLayoutConfig {
     }
 
     /// A configuration that draws the graph's structure: the stress model
-    /// ([`StressModel`]) inside the physics, from a start that is already a layout.
+    /// ([`StressModel`]) inside the physics, from a start that is already a layout. The
+    /// recommended preset for laying a graph out.
     ///
     /// Every two nodes are kept near their graph distance, as stress majorization
     /// (Graphviz neato) and stress SGD (the lowest stress any published method reaches)
     /// keep them: meshes and grids come out flat, trees spread, power networks show their
     /// branches. The first world starts from a global layout (pivot MDS refined by stress
-    /// SGD passes, components packed), so the first frame shows the graph's shape and the
-    /// physics refines it; drags, throws, pins, per-node forces, contacts and local heat
-    /// work as under [`force_directed`](Self::force_directed):
+    /// SGD passes, components packed side by side), so the first frame shows the graph's
+    /// shape and the physics refines it; drags, throws, pins, per-node forces, contacts
+    /// and local heat work as under [`force_directed`](Self::force_directed):
     /// - edge springs of stiffness 7,200 resting at the hop length (at least 100 units,
     ///   longer where the nodes' disks need room: [`StressModel::fit_length`]), solved as
-    ///   forces of the layout's own, and the stress terms beside them, 200 pivots
-    ///   (the full stress for components of up to 200 nodes), exact terms within two hops;
+    ///   forces of the layout's own, and the stress terms beside them: the full stress
+    ///   for graphs of up to 2,000 nodes, 100 pivots above, exact terms within two hops,
+    ///   pivot terms worked out every fourth substep ([`StressModel`]);
     /// - no many-body repulsion: stress spreads the graph itself;
-    /// - the layout's own disk separation at 240 Hz, ζ = 1, from the first frame;
-    /// - a 2 s cooling schedule that scales every stress term with the heat (their balance
-    ///   stays the same while the push toward it fades), local reheat (one hop), a thrown
-    ///   node coasting at 1 % of its springs' strength and damped at 1/s until it turns;
+    /// - the layout's own disk separation at 240 Hz, ζ = 1, from the first 0.35 s on
+    ///   ([`Cooling::first_contact_heat`] 0.3: the first frames of a large graph refine
+    ///   the start faster than the contacts could follow);
+    /// - a 2 s cooling schedule that scales every stress term with the heat (their
+    ///   balance stays the same while the push toward it fades), so a graph rests within
+    ///   150 frames; local reheat (one hop), and a thrown node coasting with 0.3 % of its
+    ///   terms' strength ([`Cooling::coasting_spring_scale`]: the stress terms of a node
+    ///   outnumber its edges) and damped at 1/s until it turns back;
     /// - linear damping 20 per second, one solver iteration of three passes.
     ///
-    /// The README's quality table gives its stress against neato, sfdp and stress SGD,
-    /// its frames to rest and step times, and the trade of pivots against them.
+    /// `docs/quality.md` gives its stress against neato, sfdp and stress SGD on the
+    /// standard graphs, its frames and time to rest, and the trade of pivots, pivot
+    /// period and start against them.
     ///
     /// # Example
     /// ```

@@ -32,6 +32,11 @@ pub enum StressStart {
 /// as they do. Distances count hops: edge weights scale the edge springs' strength, not
 /// the distances.
 ///
+/// The hop distances are searched when the graph changes: from every pivot (O(pivots ×
+/// (n + e))), except when the only change is leaves added, whose distances are their
+/// neighbour's plus one (no other pair's distance changes). `docs/quality.md` gives what
+/// an edit costs.
+///
 /// # Example
 /// ```
 /// use graph_canvas_layout::{RapierLayoutConfig, StressModel};
@@ -45,12 +50,14 @@ pub enum StressStart {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct StressModel {
-    /// Pivots in all, shared among the components by size, or `None` for the full
-    /// stress (every pair a term: O(n²) a step). A component with no more nodes than its
-    /// share is laid out with the full stress. Fewer pivots cost less per step and
-    /// approximate far pairs more coarsely (the README's trade table gives stress, frames
-    /// and step time for 20 to 200 and the full stress). Changing it rebuilds the
-    /// model's terms on the next step (bodies keep their motion). Default: `Some(200)`.
+    /// Pivots in all for graphs larger than [`full_up_to`](Self::full_up_to), shared
+    /// among the components by size, or `None` for the full stress at any size (every
+    /// pair a term: O(n²) a substep). A component with no more nodes than its share is
+    /// laid out with the full stress. More pivots approximate far pairs more finely and
+    /// cost more per substep, and more hop distances to search at the start and after
+    /// each edit (`docs/quality.md` gives stress, frames and step time from 20 pivots to
+    /// the full stress). Changing it builds the model's terms again on the next step
+    /// (bodies keep their motion). Default: `Some(100)`.
     pub pivots: Option<usize>,
     /// Graphs of up to this many nodes (all components together) use the full stress
     /// whatever [`pivots`](Self::pivots) says: every pair a term, the layouts of least
@@ -75,13 +82,16 @@ pub struct StressModel {
     /// Where the first world starts ([`StressStart`]). Default: [`StressStart::Global`].
     pub start: StressStart,
     /// Stress SGD passes of the global start after pivot MDS, for graphs of up to
-    /// 20,000 nodes; larger ones take fewer, in proportion (at least 5), so a 100,000-
-    /// node graph shows its shape within seconds and the physics refines it. More
+    /// 20,000 nodes; larger ones take fewer, in proportion (`30 × 20,000 / n`: 6 at 100,000), so a
+    /// 100,000-node graph shows its shape within seconds and the physics refines it. More
     /// passes start closer to the stress minimum. Default: `30`.
     pub start_passes: u32,
-    /// The pivot terms are worked out every this many substeps and held in between (the
-    /// exact terms and edges every substep). Far pairs change slowly; holding them saves
-    /// most of a large graph's step. Default: `1`.
+    /// The pivot terms are worked out every this many substeps and held in between as
+    /// their first-order model (the force less their stiffness times the way moved since),
+    /// while the exact terms and edges are worked out every substep. Far pairs change
+    /// slowly: 4 takes `n10000_e25000`'s step from 17 to 7 ms at the median with the
+    /// same stress at rest (`docs/quality.md`); longer periods lag a fast node's far
+    /// pulls more. Default: `4`.
     pub pivot_period: u32,
 }
 

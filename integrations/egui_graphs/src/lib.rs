@@ -81,8 +81,7 @@ pub struct RapierGraphState {
     /// Whether frames step the layout. Default: `true`.
     pub is_running: bool,
     /// The layout's configuration; changes take effect on the next frame as
-    /// [`RapierLayout::config`] changes do. Default:
-    /// [`RapierLayoutConfig::force_directed`].
+    /// [`RapierLayout::config`] changes do. Default: [`RapierLayoutConfig::stress`].
     pub config: RapierLayoutConfig,
     /// Pinned nodes, by node index: they hold where they are (and where the host or a
     /// drag puts them).
@@ -102,7 +101,7 @@ impl Default for RapierGraphState {
     fn default() -> Self {
         Self {
             is_running: true,
-            config: RapierLayoutConfig::force_directed(),
+            config: RapierLayoutConfig::stress(),
             pinned: BTreeSet::new(),
             converged: false,
             last_avg_displacement: None,
@@ -136,7 +135,7 @@ impl AnimatedState for RapierGraphState {
 }
 
 impl RapierGraphState {
-    /// A state with `config` instead of [`RapierLayoutConfig::force_directed`].
+    /// A state with `config` instead of [`RapierLayoutConfig::stress`].
     pub fn with_config(config: RapierLayoutConfig) -> Self {
         Self {
             config,

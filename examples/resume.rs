@@ -112,24 +112,7 @@ fn picture(name: &str, config: &RapierLayoutConfig) {
     let idle_ms = started.elapsed().as_secs_f64() * 1e3 / 300.0;
     let before = host.scene.clone();
     let centre = host.centre();
-    let degree = |id: u32| {
-        picture
-            .edges
-            .iter()
-            .filter(|e| e.source == id || e.target == id)
-            .count()
-    };
-    let leaf = picture
-        .nodes
-        .iter()
-        .filter(|n| degree(n.id) == 1)
-        .max_by(|a, b| {
-            (a.position - centre)
-                .length()
-                .total_cmp(&(b.position - centre).length())
-        })
-        .map(|n| n.id)
-        .expect("a leaf");
+    let leaf = host.outermost_leaf().expect("a leaf");
     let out = (host.pos(leaf) - centre).normalize() * 10.0;
     host.extras.dragging.insert(leaf);
     for _ in 0..10 {

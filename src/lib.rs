@@ -13,15 +13,14 @@
 //!     Layout, LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState,
 //! };
 //!
-//! // The host's graph. All three start at one point: they are spread a little and
-//! // the repulsion unfolds them.
+//! // The host's graph, every node at one point: the first call already puts them
+//! // where the layout wants them.
 //! let mut scene = CanvasSceneInput::new(
 //!     ["a", "b", "c"].map(|id| CanvasNode::new(id, Point2D::origin())).to_vec(),
 //!     vec![CanvasEdge::new("a", "b"), CanvasEdge::new("b", "c")],
 //! );
-//! // force_directed() lays graphs out; the default configuration is a physical canvas
-//! // without repulsion.
-//! let mut layout = RapierLayout::new(RapierLayoutConfig::force_directed());
+//! // stress() keeps every two nodes near their graph distance: the recommended preset.
+//! let mut layout = RapierLayout::new(RapierLayoutConfig::stress());
 //! let mut state = RapierLayoutState::default();
 //! let mut extras = LayoutExtras::default();
 //! extras.pinned.insert("a"); // an anchor
@@ -34,8 +33,9 @@
 //! }
 //! assert!(layout.is_converged(&state), "at rest within 5 s");
 //! assert_eq!(scene.nodes[0].position, Point2D::origin(), "the pin held");
-//! let ab = (scene.nodes[1].position - scene.nodes[0].position).length();
-//! assert!(ab > 32.0, "unfolded: a and b are {ab} apart");
+//! let [a, b, c] = [0, 1, 2].map(|i| scene.nodes[i].position);
+//! let (ab, ac) = ((b - a).length(), (c - a).length());
+//! assert!(ab > 32.0 && ac > 1.5 * ab, "a path: a–b {ab}, a–c {ac}");
 //! ```
 //!
 //! ## The contract in short
@@ -49,33 +49,13 @@
 //! - [`RapierLayout::try_step`] rejects bad input with a [`LayoutError`] and changes
 //!   nothing; [`Layout::step`] leaves bad elements out and never panics.
 //!
-//! ## Module map
-//! The crate's modules are private; everything public is re-exported at the root.
-//! One [`Layout::step`] call runs through them in this order:
-//!
-//! | module | owns |
-//! | --- | --- |
-//! | `input/` | the host's scene ([`CanvasSceneInput`]), per-node forces ([`NodeForces`]), the scene file format, what counts as bad input ([`LayoutError`]), the topology and its order-free hash |
-//! | `config/` | [`RapierLayoutConfig`] and its parts: edge joints and body kinds, the solver and contacts, the [`Cooling`] schedule, the presets |
-//! | `adapter/` | [`RapierLayout`]: one file per stage of a call, below |
-//! | `forces/` | the forces put on bodies every substep, one per file (many-body repulsion over the Barnes–Hut tree, edge springs and link bias, centre pull, the host's pulls toward an x, a y or a ring, groups), and the layout's own disk separation in `forces/collide/` |
-//! | `world/` | [`RapierSceneWorld`]: bodies, joints, springs scaled at once, sleep and wake, stepping, recovery of quarantined bodies, contact events |
-//! | `timestep.rs`, `layout.rs`, `quality` | frame time to substeps, the [`Layout`] trait, layout quality measures |
-//!
-//! 1. `adapter/substeps.rs` plans the substeps; `adapter/reconfigure.rs` applies a
-//!    changed configuration.
-//! 2. `adapter/matching.rs` matches scene nodes to bodies; when the topology changed,
-//!    `adapter/edits.rs` patches the world (`world/nodes.rs`, `world/edges.rs`).
-//! 3. `adapter/sync_in.rs` and `adapter/drag.rs` put the host's pins, drags, releases
-//!    and edits onto the bodies (`world/bodies.rs`, `world/activity.rs`);
-//!    `adapter/node_forces.rs` reads the host's per-node forces and axis locks.
-//! 4. `adapter/heat.rs` reheats a cooling layout after a disturbance, all of it or near
-//!    the disturbance only (`adapter/disturbance.rs`), and re-tunes its springs
-//!    (`world/spring_scale.rs`).
-//! 5. `adapter/substeps.rs` runs each substep: kinematic drives, `forces/`, one rapier
-//!    step (`world/stepping.rs`, `world/recovery.rs`), the locked axes held.
-//! 6. `adapter/sync_out.rs` reads each free node's displacement; `adapter/rest.rs`
-//!    decides whether the layout is at rest and stops a cooled one.
+//! ## How it is built
+//! The crate's modules are private except [`quality`]; everything else public is
+//! re-exported at the root.
+//! `docs/design.md` in the repository gives the module map, the order in which one
+//! [`Layout::step`] runs through them, and the physics of each preset;
+//! `docs/quality.md`, `docs/feel.md`, `docs/performance.md` and `docs/tradeoff.md`
+//! hold the measurements.
 //!
 //! ## Feature flags
 //! - `petgraph`: `CanvasSceneInput::from_petgraph` and `from_petgraph_with` for any
@@ -117,26 +97,30 @@
 //! **Jitter at rest?** A resting layout reports nothing: rapier puts bodies slower than
 //! 5 units/s (`0.05 × length_unit`) for 0.5 s to sleep and they stop exactly,
 //! [`Layout::is_converged`] waits for that, and displacements under
-//! [`RapierLayoutConfig::delta_epsilon`] are not reported. Dense piles of disks pushed together by springs settle more slowly;
-//! [`Accuracy::Precise`] resolves their contacts in fewer frames, and
-//! [`RapierLayoutConfig::force_directed`] keeps nodes apart in the first place.
+//! [`RapierLayoutConfig::delta_epsilon`] are not reported. Dense piles of disks pushed
+//! together by springs settle more slowly; [`Accuracy::Precise`] resolves their
+//! contacts in fewer frames, and the layout presets keep nodes apart in the first place.
 //!
 //! **Very large coordinates?** Positions are `f32`: near 1e5 they resolve to 0.008 units,
 //! near 1e6 to 0.06, near 1e7 to 1. The layout stays finite there, but motion finer than
 //! the resolution is lost. Keep the graph within about ±1e5 of the origin (lay out in a
 //! local frame and translate on display).
 //!
-//! **Which preset?** [`Accuracy::Balanced`] (default) sits at the knee of the measured
-//! cost/error curve. [`Accuracy::Fast`] costs 0.7× on sparse graphs but is slower in
-//! dense contact piles; [`Accuracy::Precise`] costs about 6× for trajectories and
-//! spring lengths closer to a fine-timestep reference. The README's table gives the
-//! figures (`cargo run --release --example tradeoff`).
+//! **Which layout preset?** [`RapierLayoutConfig::stress`] to lay a graph out: it keeps
+//! graph distances as stress majorization does (within a few percent of stress SGD's
+//! stress on the standard test graphs) and starts from a global layout, so the first
+//! frame shows the graph's shape. [`RapierLayoutConfig::force_directed`] is d3-force's
+//! model (repulsion, springs, collisions); `force_directed_fast` leaves out the
+//! collisions. The default configuration has no layout forces: a physical canvas
+//! arranged by hand, where springs and contacts alone pack a graph into a blob. Every
+//! preset cools to rest, then stops stepping the world until the next drag, release,
+//! host move or edit, which heats only the nodes near it.
 //!
-//! **Laying a graph out from scratch?** Use [`RapierLayoutConfig::force_directed`]:
-//! springs and contacts alone pack a graph into a blob; many-body repulsion spreads it.
-//! Its [`Cooling`] schedule brings the layout to rest within about 5 s of simulated
-//! time (300 frames), then stops stepping the world until the next drag, release, host
-//! move or edit, which heats only the nodes near it.
+//! **Which accuracy level?** Independent of the preset: [`Accuracy::Balanced`] (default)
+//! sits at the knee of the measured cost/error curve. [`Accuracy::Fast`] is cheaper on
+//! sparse graphs but slower in dense contact piles; [`Accuracy::Precise`] costs several
+//! times as much for trajectories and spring lengths closer to a fine-timestep
+//! reference (`docs/tradeoff.md`, `cargo run --release --example tradeoff`).
 //!
 //! **Timelines, layers, rings, clusters?** Per-node [`NodeForces`] in
 //! [`LayoutExtras::forces`]: a pull toward a target x or y, a ring, a group key
@@ -145,11 +129,11 @@
 //! hold nodes within a few units against `force_directed()`'s edge springs use 20 or
 //! more (0.1 to 1 is a gentle bias).
 //!
-//! **Nodes pass through each other right after loading?** With
-//! [`RapierLayoutConfig::force_directed`], contacts join the first unfolding once it
-//! has cooled to [`Cooling::first_contact_heat`] (about 0.8 s): a fresh scatter
-//! collapsing into thousands of contact pairs would cost most of the step. Set it to
-//! `None` for contacts from the first frame.
+//! **Nodes pass through each other right after loading?** Under the layout presets,
+//! contacts join the first unfolding once it has cooled to
+//! [`Cooling::first_contact_heat`] (0.3: about 0.35 s under `stress()`, 0.8 s under
+//! `force_directed()`): a fresh start moving fast through thousands of contact pairs
+//! would cost most of the step. Set it to `None` for contacts from the first frame.
 #![deny(missing_docs)]
 
 mod adapter;

@@ -93,4 +93,26 @@ impl Host {
             .fold(Vector2D::zero(), |s, n| s + n.position.to_vector());
         (sum / nodes.len().max(1) as f32).to_point()
     }
+
+    /// The leaf (a node of one edge) farthest from [`centre`](Self::centre), if any.
+    pub fn outermost_leaf(&self) -> Option<u32> {
+        let centre = self.centre();
+        let edges = &self.scene.edges;
+        let degree = |id: u32| {
+            edges
+                .iter()
+                .filter(|e| e.source == id || e.target == id)
+                .count()
+        };
+        self.scene
+            .nodes
+            .iter()
+            .filter(|n| degree(n.id) == 1)
+            .max_by(|a, b| {
+                (a.position - centre)
+                    .length()
+                    .total_cmp(&(b.position - centre).length())
+            })
+            .map(|n| n.id)
+    }
 }

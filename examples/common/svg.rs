@@ -49,8 +49,12 @@ pub fn svg(
         hi = hi.max(p);
     }
     let pad = 40.0;
-    let (w, h) = (hi.x - lo.x + 2.0 * pad, hi.y - lo.y + 2.0 * pad);
-    let at = |p: Point2D<f32>| (p.x - lo.x + pad, p.y - lo.y + pad);
+    // Lines and text keep their size on the page however large the layout is.
+    let unit = ((hi.x - lo.x).max(hi.y - lo.y) / 1_000.0).max(1.0);
+    // A band above the drawing holds the title.
+    let top = pad + 32.0 * unit;
+    let (w, h) = (hi.x - lo.x + 2.0 * pad, hi.y - lo.y + pad + top);
+    let at = |p: Point2D<f32>| (p.x - lo.x + pad, p.y - lo.y + top);
     let mut out = String::new();
     let _ = writeln!(
         out,
@@ -58,7 +62,10 @@ pub fn svg(
     );
     let _ = writeln!(
         out,
-        r#"<rect width="100%" height="100%" fill="white"/><text x="12" y="24" font-size="16">{title}</text>"#
+        r#"<rect width="100%" height="100%" fill="white"/><text x="{:.0}" y="{:.0}" font-size="{:.0}">{title}</text>"#,
+        12.0 * unit,
+        24.0 * unit,
+        16.0 * unit
     );
     for guide in guides {
         let style = r##"fill="none" stroke="#bbb" stroke-width="1.5" stroke-dasharray="6 4""##;
@@ -92,7 +99,7 @@ pub fn svg(
         let ((x1, y1), (x2, y2)) = (at(position[&e.source]), at(position[&e.target]));
         let _ = writeln!(
             out,
-            r##"<line x1="{x1:.1}" y1="{y1:.1}" x2="{x2:.1}" y2="{y2:.1}" stroke="#999" stroke-width="1"/>"##
+            r##"<line x1="{x1:.1}" y1="{y1:.1}" x2="{x2:.1}" y2="{y2:.1}" stroke="#999" stroke-width="{unit:.1}"/>"##
         );
     }
     if trail.len() > 1 {
@@ -105,16 +112,26 @@ pub fn svg(
             .collect();
         let _ = writeln!(
             out,
-            r##"<polyline points="{}" fill="none" stroke="#d62728" stroke-width="2"/>"##,
-            path.join(" ")
+            r##"<polyline points="{}" fill="none" stroke="#d62728" stroke-width="{:.1}"/>"##,
+            path.join(" "),
+            2.0 * unit
         );
+        // A marker every 10 frames where the trail has moved on from the last one (a
+        // node resting or turning back does not pile labels on one spot).
+        let mut last: Option<(f32, f32)> = None;
         for (i, p) in trail.iter().enumerate().step_by(10) {
             let (x, y) = at(*p);
+            if last.is_some_and(|(lx, ly)| (x - lx).hypot(y - ly) < 40.0 * unit) {
+                continue;
+            }
+            last = Some((x, y));
             let _ = writeln!(
                 out,
-                r##"<circle cx="{x:.1}" cy="{y:.1}" r="3" fill="#d62728"/><text x="{:.1}" y="{:.1}" font-size="10" fill="#d62728">{:.2}s</text>"##,
-                x + 4.0,
-                y - 4.0,
+                r##"<circle cx="{x:.1}" cy="{y:.1}" r="{:.1}" fill="#d62728"/><text x="{:.1}" y="{:.1}" font-size="{:.0}" fill="#d62728">{:.2}s</text>"##,
+                3.0 * unit,
+                x + 4.0 * unit,
+                y - 4.0 * unit,
+                10.0 * unit,
                 i as f32 * frame
             );
         }

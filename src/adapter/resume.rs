@@ -33,7 +33,7 @@ use crate::world::RapierSceneWorld;
 /// the bodies are, not how the host drew them: 2.6 KB a node as JSON (edges included) on
 /// a random graph of 10,000 nodes and 25,000 edges under
 /// [`force_directed`](RapierLayoutConfig::force_directed), several times that with
-/// rapier's contacts, whose manifolds it keeps (README, Keep and resume).
+/// rapier's contacts, whose manifolds it keeps (`docs/performance.md`, Keep and resume).
 ///
 /// # Example
 /// ```
@@ -154,7 +154,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
 
     /// Everything the next call needs to continue exactly where this layout is
     /// ([`LayoutSnapshot`]). Costs a copy of the world: 1.6 ms at n = 10,000 under
-    /// [`force_directed`](RapierLayoutConfig::force_directed) (README, Keep and resume).
+    /// [`force_directed`](RapierLayoutConfig::force_directed) (`docs/performance.md`, Keep and resume).
     pub fn snapshot(&self) -> LayoutSnapshot<N> {
         LayoutSnapshot {
             format: LayoutSnapshot::<N>::FORMAT,

@@ -32,7 +32,7 @@ pub enum TopologyUpdate {
     #[default]
     Incremental,
     /// Build the whole world again from the host's positions (all motion is lost).
-    /// The plan's original behaviour; costs O(n + e) body and joint constructions.
+    /// Costs O(n + e) body and joint constructions.
     Rebuild,
 }
 
@@ -138,7 +138,7 @@ pub struct RapierLayoutConfig {
     /// Lower exponents stiffen the springs between well-connected nodes, which physical
     /// springs need more than d3's links (a subtree's whole pull reaches its root edge):
     /// 0.6 with the other `force_directed()` settings narrows the edge-length spread
-    /// (CV) on `tree_1023` from 0.60 to 0.52; lower still pulls dense cores into piles of
+    /// (CV) on `tree_1023` from 0.52 to 0.44 (ten-start means, `docs/performance.md`); lower still pulls dense cores into piles of
     /// touching disks, compacts the layout and makes large random graphs unfold slower
     /// (contacts). Degrees count distinct neighbours; a topology edit re-tunes the
     /// springs whose ends changed degree. Costs nothing per step. Default: `0.0`
@@ -159,13 +159,13 @@ pub struct RapierLayoutConfig {
     /// How unevenly a spring pulls its two ends, from 0 to 1. At 0 a spring is a
     /// physical one: equal and opposite pulls. At 1 it shares its pull like d3-force's
     /// link bias: each end takes a part proportional to the *other* end's degree (twice
-    /// the spring force in total, as before), so a leaf is drawn to its hub harder than
+    /// the spring force in total, as at 0), so a leaf is drawn to its hub harder than
     /// the hub to the leaf, and hubs are not dragged about by their many leaves. The
     /// difference is an extra force on each end, applied with the body forces every
     /// substep; it does not conserve momentum (the centre pull of [`Repulsion`] keeps
     /// the graph in place). With the other `force_directed()` settings, 1 takes the
-    /// edge-length CV of `karate` from 0.19 to 0.17 and of `les_miserables` from 0.31 to
-    /// 0.29.
+    /// edge-length CV of `tree_1023` from 0.48 to 0.44 and of `les_miserables` from 0.30
+    /// to 0.29, and leaves `karate`'s at 0.19 (ten-start means, `docs/performance.md`).
     /// Costs one pass over the springs per substep. Clamped to `[0, 1]` (higher gains
     /// are explicit forces stiffer than the step resolves); not finite counts as 0.
     /// Default: `0.0` ([`RapierLayoutConfig::force_directed`] uses `1.0`).

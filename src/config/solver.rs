@@ -7,10 +7,10 @@ use serde::{Deserialize, Serialize};
 #[cfg(doc)]
 use crate::BodyKindPolicy;
 
-/// How hard the solver works per step. Each preset fixes rapier's solver iterations,
+/// How hard the solver works per step. Each level fixes rapier's solver iterations,
 /// internal PGS iterations and substeps per timestep; cost grows about linearly with
-/// `solver_iterations × substeps`. The published table (README, `cargo run --release
-/// --example tradeoff`) gives the measured cost and error of each.
+/// `solver_iterations × substeps`. `docs/tradeoff.md` (`cargo run --release --example
+/// tradeoff`) gives the measured cost and error of each.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum Accuracy {
     /// 1 solver iteration, 1 substep per timestep: the cheapest step. Springs and
@@ -22,8 +22,9 @@ pub enum Accuracy {
     #[default]
     Balanced,
     /// 8 solver iterations, 2 internal PGS iterations and 2 substeps per timestep:
-    /// about 16× the solver work of `Balanced` for the stiffest constraints and the most
-    /// faithful trajectories.
+    /// 8× the solver work of `Balanced` (6× the step time measured in
+    /// `docs/tradeoff.md`) for the stiffest constraints and the most faithful
+    /// trajectories.
     Precise,
     /// Explicit settings.
     Custom {

@@ -26,7 +26,7 @@ pub struct Repulsion {
     pub strength: f32,
     /// Barnes–Hut opening ratio: a cell of width `w` at distance `d` counts as one body
     /// when `w / d < theta`. 0 is the exact sum; larger is cheaper and coarser (see the
-    /// README's error/time table). Default: `0.9` (d3-force's default).
+    /// error/time table of `docs/performance.md`). Default: `0.9` (d3-force's default).
     pub theta: f32,
     /// Distances below this count as this, so coincident nodes get a finite push.
     /// Default: `8.0`.

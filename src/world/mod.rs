@@ -4,7 +4,7 @@
 //! [`RapierSceneWorld`] owns every rapier set and pipeline, maps node ids to bodies, and
 //! keeps per node the anchor that [`read_positions`](RapierSceneWorld::read_positions)
 //! measures from. [`RapierLayout`](crate::RapierLayout) drives it once per frame; hosts
-//! that want the plan's low-level API can drive it directly. Each part of it is a file of
+//! that want the low-level API can drive it directly. Each part of it is a file of
 //! its own, adding its own `impl RapierSceneWorld`:
 //!
 //! - `bindings.rs`: what bodies are built from (shape, material, kind, snapshots);
@@ -67,7 +67,7 @@ pub struct WorldOptions {
 }
 
 impl Default for WorldOptions {
-    /// Collisions and contact events on, as the plan's world wrapper has them.
+    /// Collisions and contact events on, as the world wrapper's low-level API has them.
     fn default() -> Self {
         Self {
             collisions: true,

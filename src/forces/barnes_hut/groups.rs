@@ -34,7 +34,7 @@ impl ManyBody {
     /// cells `force_on` opens and its mean error is no larger (on `n10000_e25000` at
     /// theta 0.9, 0.59 % against 0.83 %; single points can land either side), theta 0 is
     /// still the exact sum, and on `n10000_e25000` at theta 0.9 a build and a pass take
-    /// 1.8–1.9 ms (README).
+    /// 1.8–1.9 ms (`docs/performance.md`).
     ///
     /// # Example
     /// ```
@@ -183,7 +183,7 @@ impl GroupLists {
     /// division is taken for every entry and its result selected after (a select around
     /// the division kept the loop scalar), and the points are indexed, two of them (one
     /// point, or an iterator over the two, left the loop scalar; with four the 64 sums
-    /// overflow the 16 vector registers). The README gives the times.
+    /// overflow the 16 vector registers). `docs/performance.md` gives the times.
     fn sum(&self, p: [Point2D<f32>; BLOCK], query: &Query) -> [Vector2D<f32>; BLOCK] {
         let (mut fx, mut fy) = ([[0.0_f32; LANES]; BLOCK], [[0.0_f32; LANES]; BLOCK]);
         let chunks = self.x.chunks_exact(LANES).zip(self.y.chunks_exact(LANES));

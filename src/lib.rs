@@ -48,6 +48,9 @@
 //! - A free node the host moved itself (undo, snap) is put where the host put it.
 //! - [`RapierLayout::try_step`] rejects bad input with a [`LayoutError`] and changes
 //!   nothing; [`Layout::step`] leaves bad elements out and never panics.
+//! - [`LayoutWorker`] steps a layout on a thread of its own for graphs whose step would
+//!   cost the UI thread its frame rate: the host sends what changes and reads the
+//!   newest positions without waiting.
 //!
 //! ## How it is built
 //! The crate's modules are private except [`quality`]; everything else public is
@@ -145,6 +148,7 @@ pub mod quality;
 mod sanitize;
 mod stress;
 mod timestep;
+mod worker;
 mod world;
 
 pub use euclid;
@@ -170,6 +174,7 @@ pub use input::topology::topology_hash;
 pub use input::validation::{LayoutError, MAX_COORDINATE};
 pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeMap, NodeSet};
 pub use timestep::{StepPlan, DEFAULT_TIMESTEP, MIN_TIMESTEP};
+pub use worker::{LayoutFrame, LayoutWorker};
 pub use world::bindings::{
     ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot, PhysicsMaterial, SceneBodyKind,
 };

@@ -1,0 +1,281 @@
+//! A layout on a thread of its own: [`LayoutWorker`] owns a [`RapierLayout`] on a
+//! worker thread, takes the host's edits, pins, drags and forces as messages, and
+//! publishes the newest positions after every step. The host's thread never waits for
+//! a step.
+
+mod thread;
+
+use std::hash::Hash;
+use std::sync::mpsc::{channel, Sender};
+use std::sync::{Arc, Mutex};
+use std::thread::JoinHandle;
+use std::time::Duration;
+
+use euclid::default::Point2D;
+
+use self::thread::{Command, Slot, Worker};
+use crate::config::RapierLayoutConfig;
+use crate::input::node_forces::NodeForces;
+use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput};
+use crate::layout::NodeMap;
+#[cfg(doc)]
+use crate::RapierLayout;
+
+/// The positions of one step of a [`LayoutWorker`], as the host reads them.
+#[derive(Clone, Debug)]
+pub struct LayoutFrame<N> {
+    /// The node ids, in the worker's scene order (the host's order, nodes added since
+    /// at the end). Shared between frames until the node set changes.
+    pub ids: Arc<Vec<N>>,
+    /// Each id's index in [`ids`](Self::ids) and [`positions`](Self::positions).
+    pub index: Arc<NodeMap<N, usize>>,
+    /// Each node's position after the step, in the order of [`ids`](Self::ids).
+    pub positions: Vec<Point2D<f32>>,
+    /// Whether the layout rested after this step ([`crate::Layout::is_converged`]).
+    pub converged: bool,
+    /// How many of the host's messages the worker had applied before this step.
+    pub applied: u64,
+    /// Steps the worker has taken in all.
+    pub steps: u64,
+    /// The wall time of each step since the host's previous
+    /// [`frame`](LayoutWorker::frame) call (the worker may step more often than the host
+    /// reads; empty when it has not stepped since).
+    pub step_times: Vec<Duration>,
+}
+
+impl<N> Default for LayoutFrame<N> {
+    fn default() -> Self {
+        Self {
+            ids: Arc::default(),
+            index: Arc::default(),
+            positions: Vec::new(),
+            converged: false,
+            applied: 0,
+            steps: 0,
+            step_times: Vec::new(),
+        }
+    }
+}
+
+/// A [`RapierLayout`] stepping on a thread of its own, for graphs whose step would cost
+/// the host's UI thread its frame rate.
+///
+/// The host sends what changes (nodes and edges added or removed, pins, drags, host
+/// moves, per-node forces, a new configuration): each message costs the host's thread
+/// what it carries, never a copy of the scene, and the worker applies them in the order
+/// they were sent. [`frame`](Self::frame) returns the newest positions without waiting
+/// for a step; a dragged node reads where the host last put it, in the same frame. The
+/// worker steps once per `frame_time` of real time with `dt = frame_time`; it sleeps
+/// while the layout rests and wakes on the next message. Dropping the handle stops the
+/// thread.
+///
+/// The trade: a step slower than `frame_time` (a graph of 100,000 nodes under
+/// [`stress`](RapierLayoutConfig::stress) takes about 200 ms) runs the layout in slow
+/// motion instead of simulating the lost time in the next step, whose substeps would
+/// make it slower still. The host keeps its frame rate and sees a new frame after
+/// every step; a node let go in slow motion is thrown with the pointer's last move over
+/// one simulated frame, faster than the hand moved.
+///
+/// Which step a message lands in depends on the machine's timing, so runs through a
+/// worker are not bit-for-bit reproducible, as a [`RapierLayout`] stepped by the host
+/// is.
+///
+/// # Example
+/// ```
+/// use graph_canvas_layout::{euclid::default::Point2D, CanvasEdge, CanvasNode, CanvasSceneInput,
+///     LayoutWorker, RapierLayoutConfig};
+/// let scene = CanvasSceneInput::new(
+///     (0..6).map(|i| CanvasNode::new(i, Point2D::origin())).collect(),
+///     (0..6).map(|i| CanvasEdge::new(i, (i + 1) % 6)).collect(),
+/// );
+/// let mut worker = LayoutWorker::spawn(scene, RapierLayoutConfig::stress());
+/// worker.pin(0);
+/// // The UI loop: read the newest positions each frame, draw, send what the user did.
+/// loop {
+///     let frame = worker.frame();
+///     assert!(frame.positions.len() == 6 || frame.steps == 0);
+///     if worker.is_converged() {
+///         break;
+///     }
+///     std::thread::sleep(std::time::Duration::from_millis(16));
+/// }
+/// let spread = worker.position(&3).unwrap() - worker.position(&0).unwrap();
+/// assert!(spread.length() > 100.0, "laid out: 0 and 3 are {spread:?} apart");
+/// ```
+pub struct LayoutWorker<N: Clone + Eq + Hash + Send + Sync + 'static> {
+    commands: Option<Sender<(u64, Command<N>)>>,
+    slot: Slot<N>,
+    thread: Option<JoinHandle<()>>,
+    latest: LayoutFrame<N>,
+    /// Where the host holds each dragged node.
+    drags: NodeMap<N, Point2D<f32>>,
+    /// The sequence number of the last message sent.
+    sent: u64,
+}
+
+impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
+    /// Starts a worker laying `scene` out under `config`, one step per 1/60 s.
+    pub fn spawn(scene: CanvasSceneInput<N>, config: RapierLayoutConfig) -> Self {
+        Self::spawn_with(scene, config, Duration::from_secs_f64(1.0 / 60.0))
+    }
+
+    /// [`spawn`](Self::spawn), one step of `dt = frame_time` per `frame_time` of real
+    /// time at most (a step that takes longer is followed by the next at once).
+    ///
+    /// # Panics
+    /// If the operating system cannot start a thread.
+    pub fn spawn_with(
+        scene: CanvasSceneInput<N>,
+        config: RapierLayoutConfig,
+        frame_time: Duration,
+    ) -> Self {
+        let (commands, receiver) = channel();
+        let slot: Slot<N> = Arc::new(Mutex::new(None));
+        let worker = Worker::new(scene, config, frame_time, receiver, Arc::clone(&slot));
+        let thread = std::thread::Builder::new()
+            .name("graph-canvas-layout".into())
+            .spawn(move || worker.run())
+            .expect("a layout worker thread");
+        Self {
+            commands: Some(commands),
+            slot,
+            thread: Some(thread),
+            latest: LayoutFrame::default(),
+            drags: NodeMap::default(),
+            sent: 0,
+        }
+    }
+
+    /// The newest positions: the worker's last step, with every dragged node where the
+    /// host last put it. Never waits for a step; the first frames before the worker's
+    /// first step are empty.
+    pub fn frame(&mut self) -> &LayoutFrame<N> {
+        let newest = self.slot.lock().unwrap_or_else(|e| e.into_inner()).take();
+        match newest {
+            Some(frame) => self.latest = frame,
+            // The step times went out with the frame that carried them.
+            None => self.latest.step_times.clear(),
+        }
+        for (id, at) in &self.drags {
+            if let Some(&i) = self.latest.index.get(id) {
+                self.latest.positions[i] = *at;
+            }
+        }
+        &self.latest
+    }
+
+    /// Node `id`'s position in the last [`frame`](Self::frame) read (a dragged node:
+    /// where the host holds it).
+    pub fn position(&self, id: &N) -> Option<Point2D<f32>> {
+        if let Some(at) = self.drags.get(id) {
+            return Some(*at);
+        }
+        let i = *self.latest.index.get(id)?;
+        self.latest.positions.get(i).copied()
+    }
+
+    /// Whether the layout rests with every message sent so far applied, as of the last
+    /// [`frame`](Self::frame) read (call that first, once a frame).
+    pub fn is_converged(&self) -> bool {
+        self.latest.converged && self.latest.applied == self.sent && self.drags.is_empty()
+    }
+
+    /// Whether the worker thread still runs (it stops only when the handle is dropped,
+    /// or if a step panicked).
+    pub fn is_running(&self) -> bool {
+        self.thread.as_ref().is_some_and(|t| !t.is_finished())
+    }
+
+    /// Adds a node (an id already in the scene is left out of the layout, as
+    /// [`Layout::step`](crate::Layout::step) leaves out repeats).
+    pub fn add_node(&mut self, node: CanvasNode<N>) {
+        self.send(Command::AddNode(node));
+    }
+
+    /// Removes node `id` and its edges, pin, drag and forces.
+    pub fn remove_node(&mut self, id: N) {
+        self.drags.remove(&id);
+        self.send(Command::RemoveNode(id));
+    }
+
+    /// Adds an edge.
+    pub fn add_edge(&mut self, edge: CanvasEdge<N>) {
+        self.send(Command::AddEdge(edge));
+    }
+
+    /// Removes every edge between `a` and `b`, either way round.
+    pub fn remove_edge(&mut self, a: N, b: N) {
+        self.send(Command::RemoveEdge(a, b));
+    }
+
+    /// Puts node `id` at `at`, as a host moves its own node (undo, snap).
+    pub fn move_node(&mut self, id: N, at: Point2D<f32>) {
+        self.send(Command::Move(id, at));
+    }
+
+    /// The user's pointer holds node `id` at `at` (call it every frame the pointer
+    /// moves): the node reads there at once, and the release throws it with the
+    /// pointer's last speed.
+    pub fn drag(&mut self, id: N, at: Point2D<f32>) {
+        self.drags.insert(id.clone(), at);
+        self.send(Command::Drag(id, at));
+    }
+
+    /// The pointer lets node `id` go.
+    pub fn release(&mut self, id: N) {
+        self.drags.remove(&id);
+        self.send(Command::Release(id));
+    }
+
+    /// Pins node `id` where it is.
+    pub fn pin(&mut self, id: N) {
+        self.send(Command::Pin(id, true));
+    }
+
+    /// Unpins node `id`.
+    pub fn unpin(&mut self, id: N) {
+        self.send(Command::Pin(id, false));
+    }
+
+    /// Sets node `id`'s per-node forces ([`NodeForces`]), or clears them with `None`.
+    pub fn set_forces(&mut self, id: N, forces: Option<NodeForces>) {
+        self.send(Command::Forces(id, forces));
+    }
+
+    /// Replaces the layout's configuration, as assigning
+    /// [`RapierLayout::config`] does.
+    pub fn set_config(&mut self, config: RapierLayoutConfig) {
+        self.send(Command::Configure(Box::new(config)));
+    }
+
+    fn send(&mut self, command: Command<N>) {
+        self.sent += 1;
+        if let Some(commands) = &self.commands {
+            // A worker that stopped (a panicked step) has nothing to apply it to.
+            let _ = commands.send((self.sent, command));
+        }
+    }
+}
+
+impl<N: Clone + Eq + Hash + Send + Sync + 'static> Drop for LayoutWorker<N> {
+    /// Stops the worker: it returns at its next look at the messages (after the step in
+    /// progress, or at once while it rests) and the thread is joined.
+    fn drop(&mut self) {
+        self.commands = None;
+        if let Some(thread) = self.thread.take() {
+            let _ = thread.join();
+        }
+    }
+}
+
+impl<N: Clone + Eq + Hash + Send + Sync + 'static + std::fmt::Debug> std::fmt::Debug
+    for LayoutWorker<N>
+{
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("LayoutWorker")
+            .field("sent", &self.sent)
+            .field("steps", &self.latest.steps)
+            .field("converged", &self.latest.converged)
+            .finish_non_exhaustive()
+    }
+}

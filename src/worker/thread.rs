@@ -1,0 +1,220 @@
+//! The worker's side of [`LayoutWorker`](super::LayoutWorker): the host's messages
+//! applied to the worker's own scene in the order they were sent, one
+//! [`Layout::step`] per frame (one frame of simulated time, no faster than real time),
+//! the newest positions published after each step, and a blocking wait while the
+//! layout rests.
+
+use std::hash::Hash;
+use std::sync::mpsc::{Receiver, TryRecvError};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use euclid::default::Point2D;
+
+use super::LayoutFrame;
+use crate::adapter::{RapierLayout, RapierLayoutState};
+use crate::config::RapierLayoutConfig;
+use crate::input::node_forces::NodeForces;
+use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
+use crate::layout::{Layout, LayoutExtras, NodeMap};
+
+/// One host message. The worker applies them in the order they were sent.
+pub(super) enum Command<N> {
+    AddNode(CanvasNode<N>),
+    RemoveNode(N),
+    AddEdge(CanvasEdge<N>),
+    RemoveEdge(N, N),
+    Move(N, Point2D<f32>),
+    Drag(N, Point2D<f32>),
+    Release(N),
+    Pin(N, bool),
+    Forces(N, Option<NodeForces>),
+    Configure(Box<RapierLayoutConfig>),
+}
+
+/// The newest frame, waiting for the host to take it.
+pub(super) type Slot<N> = Arc<Mutex<Option<LayoutFrame<N>>>>;
+
+/// Everything the worker thread owns.
+pub(super) struct Worker<N> {
+    pub(super) scene: CanvasSceneInput<N>,
+    pub(super) extras: LayoutExtras<N>,
+    pub(super) layout: RapierLayout<N>,
+    pub(super) state: RapierLayoutState,
+    pub(super) frame_time: Duration,
+    pub(super) commands: Receiver<(u64, Command<N>)>,
+    pub(super) slot: Slot<N>,
+    /// Node id to its index in `scene.nodes`, rebuilt when the node set changes.
+    index: Arc<NodeMap<N, usize>>,
+    ids: Arc<Vec<N>>,
+    nodes_changed: bool,
+    /// The sequence number of the last message applied.
+    applied: u64,
+    steps: u64,
+    step_times: Vec<Duration>,
+}
+
+impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
+    pub(super) fn new(
+        scene: CanvasSceneInput<N>,
+        config: RapierLayoutConfig,
+        frame_time: Duration,
+        commands: Receiver<(u64, Command<N>)>,
+        slot: Slot<N>,
+    ) -> Self {
+        Self {
+            scene,
+            extras: LayoutExtras::default(),
+            layout: RapierLayout::new(config),
+            state: RapierLayoutState::default(),
+            frame_time,
+            commands,
+            slot,
+            index: Arc::default(),
+            ids: Arc::default(),
+            nodes_changed: true,
+            applied: 0,
+            steps: 0,
+            step_times: Vec::new(),
+        }
+    }
+
+    /// Steps until the host drops its handle.
+    pub(super) fn run(mut self) {
+        let mut previous: Option<Instant> = None;
+        loop {
+            if self.layout.is_converged(&self.state) && self.steps > 0 {
+                // At rest: sleep until the host sends something.
+                match self.commands.recv() {
+                    Ok((seq, command)) => self.apply(seq, command),
+                    Err(_) => return,
+                }
+                previous = None;
+            }
+            loop {
+                match self.commands.try_recv() {
+                    Ok((seq, command)) => self.apply(seq, command),
+                    Err(TryRecvError::Empty) => break,
+                    Err(TryRecvError::Disconnected) => return,
+                }
+            }
+            // One frame of simulated time a step, no sooner than a frame after the last:
+            // a step slower than the frame runs the layout in slow motion rather than
+            // making the next step simulate (and cost) more.
+            let now = Instant::now();
+            if let Some(at) = previous {
+                let next = at + self.frame_time;
+                if next > now {
+                    std::thread::sleep(next - now);
+                }
+            }
+            previous = Some(Instant::now());
+            let dt = self.frame_time;
+            let started = Instant::now();
+            let deltas = self.layout.step(
+                &self.scene,
+                &mut self.state,
+                dt.as_secs_f32(),
+                &CanvasViewport::default(),
+                &self.extras,
+            );
+            self.scene.apply_deltas(&deltas);
+            self.steps += 1;
+            self.step_times.push(started.elapsed());
+            self.publish();
+        }
+    }
+
+    fn apply(&mut self, seq: u64, command: Command<N>) {
+        self.applied = seq;
+        match command {
+            Command::AddNode(node) => {
+                self.scene.nodes.push(node);
+                self.nodes_changed = true;
+            }
+            Command::RemoveNode(id) => {
+                self.scene.nodes.retain(|n| n.id != id);
+                self.scene
+                    .edges
+                    .retain(|e| e.source != id && e.target != id);
+                self.extras.pinned.remove(&id);
+                self.extras.dragging.remove(&id);
+                self.extras.forces.remove(&id);
+                self.nodes_changed = true;
+            }
+            Command::AddEdge(edge) => self.scene.edges.push(edge),
+            Command::RemoveEdge(a, b) => self.scene.edges.retain(|e| {
+                !((e.source == a && e.target == b) || (e.source == b && e.target == a))
+            }),
+            Command::Move(id, at) => self.put(&id, at),
+            Command::Drag(id, at) => {
+                self.put(&id, at);
+                self.extras.dragging.insert(id);
+            }
+            Command::Release(id) => {
+                self.extras.dragging.remove(&id);
+            }
+            Command::Pin(id, true) => {
+                self.extras.pinned.insert(id);
+            }
+            Command::Pin(id, false) => {
+                self.extras.pinned.remove(&id);
+            }
+            Command::Forces(id, Some(forces)) => {
+                self.extras.forces.insert(id, forces);
+            }
+            Command::Forces(id, None) => {
+                self.extras.forces.remove(&id);
+            }
+            Command::Configure(config) => self.layout.config = *config,
+        }
+    }
+
+    /// Puts node `id` at `at` in the worker's scene, as a host moves its own node.
+    fn put(&mut self, id: &N, at: Point2D<f32>) {
+        self.reindex();
+        if let Some(&i) = self.index.get(id) {
+            self.scene.nodes[i].position = at;
+        }
+    }
+
+    /// The id index and id list again, if the node set changed.
+    fn reindex(&mut self) {
+        if !self.nodes_changed {
+            return;
+        }
+        let mut index = NodeMap::default();
+        for (i, n) in self.scene.nodes.iter().enumerate() {
+            index.entry(n.id.clone()).or_insert(i);
+        }
+        self.index = Arc::new(index);
+        self.ids = Arc::new(self.scene.nodes.iter().map(|n| n.id.clone()).collect());
+        self.nodes_changed = false;
+    }
+
+    /// Hands the newest positions to the host; step times the host has not read yet
+    /// carry over.
+    fn publish(&mut self) {
+        self.reindex();
+        let mut frame = LayoutFrame {
+            ids: Arc::clone(&self.ids),
+            index: Arc::clone(&self.index),
+            positions: self.scene.nodes.iter().map(|n| n.position).collect(),
+            converged: self.layout.is_converged(&self.state),
+            applied: self.applied,
+            steps: self.steps,
+            step_times: std::mem::take(&mut self.step_times),
+        };
+        let unread = {
+            let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
+            if let Some(old) = slot.as_mut() {
+                let mut times = std::mem::take(&mut old.step_times);
+                times.append(&mut frame.step_times);
+                frame.step_times = times;
+            }
+            slot.replace(frame)
+        };
+        // The unread frame is freed outside the lock.
+        drop(unread);
+    }
+}

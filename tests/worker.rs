@@ -1,0 +1,177 @@
+//! A layout on its own thread ([`LayoutWorker`]): what the host sends reaches the
+//! layout whole and in order, a drag reads where the host put it in the same frame, a
+//! throw flies on, a pin holds, an edit lands, the worker rests and says so, and
+//! dropping it stops the thread. The worker follows real time, so these tests wait
+//! for outcomes (with a generous bound, 60 s, for a shared machine), never for a time.
+
+use std::time::{Duration, Instant};
+
+use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
+use graph_canvas_layout::{
+    CanvasEdge, CanvasNode, CanvasSceneInput, LayoutWorker, RapierLayoutConfig,
+};
+
+const BOUND: Duration = Duration::from_secs(60);
+
+/// A ring of `n` nodes, every node at the origin.
+fn ring(n: u32) -> CanvasSceneInput<u32> {
+    CanvasSceneInput::new(
+        (0..n)
+            .map(|i| CanvasNode::new(i, Point2D::origin()))
+            .collect(),
+        (0..n).map(|i| CanvasEdge::new(i, (i + 1) % n)).collect(),
+    )
+}
+
+/// Reads frames until the worker rests; panics after [`BOUND`].
+fn rest(worker: &mut LayoutWorker<u32>) {
+    let started = Instant::now();
+    while !{
+        worker.frame();
+        worker.is_converged()
+    } {
+        assert!(started.elapsed() < BOUND, "not at rest after {BOUND:?}");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+}
+
+fn at(worker: &LayoutWorker<u32>, id: u32) -> Point2D<f32> {
+    worker
+        .position(&id)
+        .unwrap_or_else(|| panic!("node {id} has no position"))
+}
+
+#[test]
+fn a_graph_sent_to_the_worker_is_laid_out_to_rest() {
+    let mut worker = LayoutWorker::spawn(ring(12), RapierLayoutConfig::stress());
+    rest(&mut worker);
+    let frame = worker.frame();
+    assert_eq!(frame.positions.len(), 12);
+    assert!(frame
+        .positions
+        .iter()
+        .all(|p| p.x.is_finite() && p.y.is_finite()));
+    let opposite = (at(&worker, 6) - at(&worker, 0)).length();
+    let next = (at(&worker, 1) - at(&worker, 0)).length();
+    assert!(
+        opposite > 2.5 * next,
+        "a ring laid out: opposite nodes {opposite} apart, neighbours {next}"
+    );
+    let steps = worker.frame().steps;
+    std::thread::sleep(Duration::from_millis(200));
+    assert_eq!(
+        worker.frame().steps,
+        steps,
+        "a resting worker sleeps: it stepped without a message"
+    );
+}
+
+#[test]
+fn a_dragged_node_reads_where_the_host_put_it_in_the_same_frame_and_a_throw_flies_on() {
+    let mut worker = LayoutWorker::spawn(ring(8), RapierLayoutConfig::stress());
+    rest(&mut worker);
+    let start = at(&worker, 0);
+    let out = (start - (at(&worker, 4) + (start - at(&worker, 4)) / 2.0)).normalize();
+    // The pointer moves 30 units a frame outward for 10 frames.
+    let mut pointer = start;
+    for _ in 0..10 {
+        pointer += out * 30.0;
+        worker.drag(0, pointer);
+        assert_eq!(
+            at(&worker, 0),
+            pointer,
+            "the drag reads where the host put it"
+        );
+        assert_eq!(worker.frame().positions[0], pointer, "the frame agrees");
+        std::thread::sleep(Duration::from_millis(16));
+    }
+    worker.release(0);
+    let released = pointer;
+    let mut farthest: f32 = 0.0;
+    let started = Instant::now();
+    loop {
+        worker.frame();
+        if worker.is_converged() {
+            break;
+        }
+        assert!(started.elapsed() < BOUND, "not at rest after the throw");
+        farthest = farthest.max((at(&worker, 0) - released).dot(out));
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    assert!(
+        farthest > 20.0,
+        "a node let go at about 1,800 units/s flew on only {farthest} units past the release"
+    );
+}
+
+#[test]
+fn a_pinned_node_holds_while_the_rest_is_laid_out() {
+    let mut scene = ring(10);
+    scene.nodes[3].position = Point2D::new(500.0, -200.0);
+    let mut worker = LayoutWorker::spawn(scene, RapierLayoutConfig::force_directed());
+    worker.pin(3);
+    rest(&mut worker);
+    assert_eq!(at(&worker, 3), Point2D::new(500.0, -200.0), "the pin held");
+    let far = (0..10)
+        .filter(|&i| i != 3)
+        .map(|i| (at(&worker, i) - Point2D::new(500.0, -200.0)).length())
+        .fold(0.0, f32::max);
+    assert!(
+        far > 100.0,
+        "the others were laid out around it (farthest {far})"
+    );
+}
+
+#[test]
+fn edits_land_in_the_order_they_were_sent_and_none_is_lost() {
+    let mut worker = LayoutWorker::spawn(ring(4), RapierLayoutConfig::stress());
+    // 200 nodes added, every other one removed again, each kept one joined to node 0,
+    // sent without waiting for a step in between.
+    for id in 100..300_u32 {
+        worker.add_node(CanvasNode::new(id, Point2D::new(id as f32, 0.0)));
+        worker.add_edge(CanvasEdge::new(0, id));
+        if id % 2 == 1 {
+            worker.remove_node(id);
+        }
+    }
+    worker.move_node(2, Point2D::new(-400.0, 0.0));
+    rest(&mut worker);
+    let frame = worker.frame();
+    let expected: Vec<u32> = (0..4).chain((100..300).filter(|id| id % 2 == 0)).collect();
+    assert_eq!(
+        frame.ids.as_slice(),
+        expected.as_slice(),
+        "the worker's nodes after the edits ({} of {})",
+        frame.ids.len(),
+        expected.len()
+    );
+    assert_eq!(frame.applied, 200 + 200 + 100 + 1, "every message applied");
+    for id in (100..300).filter(|id| id % 2 == 0) {
+        let d = (at(&worker, id) - at(&worker, 0)).length();
+        assert!(
+            d < 1_000.0,
+            "leaf {id} rests {d} from node 0, its only edge"
+        );
+    }
+}
+
+#[test]
+fn a_worker_that_rests_wakes_on_a_message_and_dropping_it_stops_the_thread() {
+    let mut worker = LayoutWorker::spawn(ring(6), RapierLayoutConfig::stress());
+    rest(&mut worker);
+    let steps = worker.frame().steps;
+    worker.add_node(CanvasNode::new(6, at(&worker, 0) + Vector2D::new(0.0, 1.0)));
+    worker.add_edge(CanvasEdge::new(0, 6));
+    assert!(!worker.is_converged(), "a message in flight is not at rest");
+    rest(&mut worker);
+    assert!(worker.frame().steps > steps, "the edit woke the worker");
+    assert!(worker.position(&6).is_some(), "the new node has a position");
+    assert!(worker.is_running());
+    let started = Instant::now();
+    drop(worker);
+    assert!(
+        started.elapsed() < BOUND,
+        "dropping the worker took {:?}",
+        started.elapsed()
+    );
+}

@@ -8,7 +8,7 @@ use std::time::{Duration, Instant};
 
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
-    CanvasEdge, CanvasNode, CanvasSceneInput, LayoutWorker, RapierLayoutConfig,
+    CanvasEdge, CanvasNode, CanvasSceneInput, LayoutExtras, LayoutWorker, RapierLayoutConfig,
 };
 
 const BOUND: Duration = Duration::from_secs(60);
@@ -68,8 +68,15 @@ fn a_graph_sent_to_the_worker_is_laid_out_to_rest() {
 
 #[test]
 fn a_dragged_node_reads_where_the_host_put_it_in_the_same_frame_and_a_throw_flies_on() {
-    let mut worker = LayoutWorker::spawn(ring(8), RapierLayoutConfig::stress());
+    // A throw window of 0.5 s: a host thread held up between two pointer moves on a busy
+    // machine still throws (the default 0.05 s is three frames).
+    let config = RapierLayoutConfig {
+        throw_window: 0.5,
+        ..RapierLayoutConfig::stress()
+    };
+    let mut worker = LayoutWorker::spawn(ring(8), config);
     rest(&mut worker);
+    let applied = worker.frame().applied;
     let start = at(&worker, 0);
     let out = (start - (at(&worker, 4) + (start - at(&worker, 4)) / 2.0)).normalize();
     // The pointer moves 30 units a frame outward for 10 frames.
@@ -84,6 +91,12 @@ fn a_dragged_node_reads_where_the_host_put_it_in_the_same_frame_and_a_throw_flie
         );
         assert_eq!(worker.frame().positions[0], pointer, "the frame agrees");
         std::thread::sleep(Duration::from_millis(16));
+    }
+    // The worker has stepped with the last pointer position before the release comes.
+    let started = Instant::now();
+    while worker.frame().applied < applied + 10 {
+        assert!(started.elapsed() < BOUND, "the drags were not applied");
+        std::thread::sleep(Duration::from_millis(1));
     }
     worker.release(0);
     let released = pointer;
@@ -108,8 +121,14 @@ fn a_dragged_node_reads_where_the_host_put_it_in_the_same_frame_and_a_throw_flie
 fn a_pinned_node_holds_while_the_rest_is_laid_out() {
     let mut scene = ring(10);
     scene.nodes[3].position = Point2D::new(500.0, -200.0);
-    let mut worker = LayoutWorker::spawn(scene, RapierLayoutConfig::force_directed());
-    worker.pin(3);
+    let mut extras = LayoutExtras::default();
+    extras.pinned.insert(3);
+    let mut worker = LayoutWorker::spawn_with(
+        scene,
+        RapierLayoutConfig::force_directed(),
+        extras,
+        Duration::from_secs_f64(1.0 / 60.0),
+    );
     rest(&mut worker);
     assert_eq!(at(&worker, 3), Point2D::new(500.0, -200.0), "the pin held");
     let far = (0..10)
@@ -174,4 +193,29 @@ fn a_worker_that_rests_wakes_on_a_message_and_dropping_it_stops_the_thread() {
         "dropping the worker took {:?}",
         started.elapsed()
     );
+}
+
+#[test]
+fn an_empty_worker_rests_and_lays_out_what_it_is_sent() {
+    let mut worker = LayoutWorker::spawn(CanvasSceneInput::default(), RapierLayoutConfig::stress());
+    rest(&mut worker);
+    assert!(worker.frame().positions.is_empty());
+    for i in 0..5_u32 {
+        worker.add_node(CanvasNode::new(i, Point2D::origin()));
+    }
+    for i in 0..4_u32 {
+        worker.add_edge(CanvasEdge::new(i, i + 1));
+    }
+    rest(&mut worker);
+    let ends = (at(&worker, 4) - at(&worker, 0)).length();
+    let step = (at(&worker, 1) - at(&worker, 0)).length();
+    assert!(
+        ends > 3.0 * step,
+        "a path laid out: its ends {ends} apart, a step {step}"
+    );
+    for i in 0..5_u32 {
+        worker.remove_node(i);
+    }
+    rest(&mut worker);
+    assert!(worker.frame().positions.is_empty(), "every node removed");
 }

@@ -5,7 +5,7 @@
 //! layout rests.
 
 use std::hash::Hash;
-use std::sync::mpsc::{Receiver, TryRecvError};
+use std::sync::mpsc::{Receiver, RecvTimeoutError, TryRecvError};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
@@ -58,13 +58,14 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
     pub(super) fn new(
         scene: CanvasSceneInput<N>,
         config: RapierLayoutConfig,
+        extras: LayoutExtras<N>,
         frame_time: Duration,
         commands: Receiver<(u64, Command<N>)>,
         slot: Slot<N>,
     ) -> Self {
         Self {
             scene,
-            extras: LayoutExtras::default(),
+            extras,
             layout: RapierLayout::new(config),
             state: RapierLayoutState::default(),
             frame_time,
@@ -79,11 +80,16 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
         }
     }
 
+    /// Whether the layout rests: converged, or nothing to lay out.
+    fn at_rest(&self) -> bool {
+        self.scene.nodes.is_empty() || self.layout.is_converged(&self.state)
+    }
+
     /// Steps until the host drops its handle.
     pub(super) fn run(mut self) {
         let mut previous: Option<Instant> = None;
         loop {
-            if self.layout.is_converged(&self.state) && self.steps > 0 {
+            if self.at_rest() && self.steps > 0 {
                 // At rest: sleep until the host sends something.
                 match self.commands.recv() {
                     Ok((seq, command)) => self.apply(seq, command),
@@ -91,24 +97,36 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
                 }
                 previous = None;
             }
+            // One frame of simulated time a step, no sooner than a frame after the last
+            // (messages are applied as they arrive meanwhile): a step slower than the
+            // frame runs the layout in slow motion rather than making the next step
+            // simulate (and cost) more.
+            let next = previous.and_then(|at| at.checked_add(self.frame_time));
             loop {
-                match self.commands.try_recv() {
+                let wait = next.map_or(Duration::ZERO, |next| {
+                    next.saturating_duration_since(Instant::now())
+                });
+                let received = if wait.is_zero() {
+                    self.commands.try_recv().map_err(|e| match e {
+                        TryRecvError::Empty => RecvTimeoutError::Timeout,
+                        TryRecvError::Disconnected => RecvTimeoutError::Disconnected,
+                    })
+                } else {
+                    self.commands.recv_timeout(wait)
+                };
+                match received {
                     Ok((seq, command)) => self.apply(seq, command),
-                    Err(TryRecvError::Empty) => break,
-                    Err(TryRecvError::Disconnected) => return,
-                }
-            }
-            // One frame of simulated time a step, no sooner than a frame after the last:
-            // a step slower than the frame runs the layout in slow motion rather than
-            // making the next step simulate (and cost) more.
-            let now = Instant::now();
-            if let Some(at) = previous {
-                let next = at + self.frame_time;
-                if next > now {
-                    std::thread::sleep(next - now);
+                    Err(RecvTimeoutError::Timeout) => break,
+                    Err(RecvTimeoutError::Disconnected) => return,
                 }
             }
             previous = Some(Instant::now());
+            if self.scene.nodes.is_empty() {
+                // Nothing to lay out: publish the empty frame and rest.
+                self.steps += 1;
+                self.publish();
+                continue;
+            }
             let dt = self.frame_time;
             let started = Instant::now();
             let deltas = self.layout.step(
@@ -133,6 +151,8 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
                 self.nodes_changed = true;
             }
             Command::RemoveNode(id) => {
+                // The body goes now: an id added again in the same batch is a new node.
+                self.layout.forget_node(&id);
                 self.scene.nodes.retain(|n| n.id != id);
                 self.scene
                     .edges
@@ -200,7 +220,7 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
             ids: Arc::clone(&self.ids),
             index: Arc::clone(&self.index),
             positions: self.scene.nodes.iter().map(|n| n.position).collect(),
-            converged: self.layout.is_converged(&self.state),
+            converged: self.at_rest(),
             applied: self.applied,
             steps: self.steps,
             step_times: std::mem::take(&mut self.step_times),

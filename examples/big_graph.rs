@@ -15,42 +15,13 @@
 
 mod common;
 
-use std::collections::VecDeque;
 use std::time::{Duration, Instant};
 
+use common::percentile;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
-use graph_canvas_layout::{LayoutWorker, RapierLayoutConfig};
+use graph_canvas_layout::{quality, LayoutWorker, RapierLayoutConfig};
 
 const FRAME: Duration = Duration::from_micros(16_667);
-
-fn percentile(mut values: Vec<f64>, p: f64) -> f64 {
-    if values.is_empty() {
-        return 0.0;
-    }
-    values.sort_by(f64::total_cmp);
-    values[((values.len() - 1) as f64 * p).round() as usize]
-}
-
-/// Hop distances from `from` over `edges`, `usize::MAX` where unreached.
-fn hops(n: usize, edges: &[(usize, usize)], from: usize) -> Vec<usize> {
-    let mut next = vec![Vec::new(); n];
-    for &(a, b) in edges {
-        next[a].push(b);
-        next[b].push(a);
-    }
-    let mut hops = vec![usize::MAX; n];
-    hops[from] = 0;
-    let mut queue = VecDeque::from([from]);
-    while let Some(v) = queue.pop_front() {
-        for &w in &next[v] {
-            if hops[w] == usize::MAX {
-                hops[w] = hops[v] + 1;
-                queue.push_back(w);
-            }
-        }
-    }
-    hops
-}
 
 /// The simulated UI thread: what it read and what its frames cost.
 #[derive(Default)]
@@ -85,18 +56,9 @@ fn main() {
         .unwrap_or_else(|| "random_n100000_e250000".into());
     let scene = common::load(&name);
     let n = scene.nodes.len();
-    let order: std::collections::HashMap<u32, usize> = scene
-        .nodes
-        .iter()
-        .enumerate()
-        .map(|(i, node)| (node.id, i))
-        .collect();
-    let edges: Vec<(usize, usize)> = scene
-        .edges
-        .iter()
-        .map(|e| (order[&e.source], order[&e.target]))
-        .collect();
     let ids: Vec<u32> = scene.nodes.iter().map(|node| node.id).collect();
+    // The graph, kept for the hop distances once the worker owns the scene.
+    let graph = scene.clone();
 
     let started = Instant::now();
     let mut worker = LayoutWorker::spawn(scene, RapierLayoutConfig::stress());
@@ -154,22 +116,20 @@ fn main() {
         }
         std::thread::sleep(FRAME.saturating_sub(tick.elapsed()));
     }
-    let hop = hops(n, &edges, dragged);
+    let hop = quality::hop_distances(&graph, &ids[dragged]);
     let far: Vec<f32> = (0..n)
-        .filter(|&i| hop[i] >= 3 && hop[i] != usize::MAX)
+        .filter(|&i| hop.get(&ids[i]).is_some_and(|&h| h >= 3))
         .map(|i| (ui.positions[i] - rest[i]).length())
         .collect();
     let far_mean = far.iter().sum::<f32>() / far.len().max(1) as f32;
-    let step_ms = ui.step_ms;
-    let ui_ms = ui.ui_ms;
-    let (ui_p99, ui_max) = (
-        percentile(ui_ms.clone(), 0.99),
-        ui_ms.iter().copied().fold(0.0, f64::max),
-    );
-    let drag_p95 = percentile(step_ms.clone(), 0.95);
+    let (mut step_ms, mut ui_ms) = (ui.step_ms, ui.ui_ms);
+    step_ms.sort_by(f64::total_cmp);
+    ui_ms.sort_by(f64::total_cmp);
+    let (ui_p99, ui_max) = (percentile(&ui_ms, 0.99), percentile(&ui_ms, 1.0));
+    let drag_p95 = percentile(&step_ms, 0.95);
     println!(
         "UI thread per frame: p50 {:.3} ms, p99 {ui_p99:.3} ms, max {ui_max:.3} ms over {} frames",
-        percentile(ui_ms.clone(), 0.5),
+        percentile(&ui_ms, 0.5),
         ui_ms.len()
     );
     println!(
@@ -177,7 +137,7 @@ fn main() {
         step_ms.len(),
         if rested { "rest" } else { "the two-minute cap, still moving" },
         released.elapsed().as_secs_f64(),
-        percentile(step_ms.clone(), 0.5),
+        percentile(&step_ms, 0.5),
         far.len()
     );
     println!(

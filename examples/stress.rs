@@ -19,7 +19,7 @@ use graph_canvas_layout::{quality, Layout, RapierLayoutConfig, StressModel, Stre
 
 mod common;
 
-use common::{load, Host};
+use common::{load, percentile, Host};
 
 const FRAME: f32 = 1.0 / 60.0;
 const SCENES: [&str; 11] = [
@@ -35,10 +35,6 @@ const SCENES: [&str; 11] = [
     "3elt",
     "rgg_10000",
 ];
-
-fn percentile(sorted: &[f64], q: f64) -> f64 {
-    sorted[((sorted.len() - 1) as f64 * q).round() as usize]
-}
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();

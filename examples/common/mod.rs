@@ -26,6 +26,14 @@ pub fn load(name: &str) -> CanvasSceneInput<u32> {
         .into_scene()
 }
 
+/// The `q` quantile (0 to 1) of `sorted`, the nearest rank; 0 for no values.
+pub fn percentile(sorted: &[f64], q: f64) -> f64 {
+    if sorted.is_empty() {
+        return 0.0;
+    }
+    sorted[((sorted.len() - 1) as f64 * q).round() as usize]
+}
+
 /// A host canvas: its scene (positions included), the layout and what it passes in.
 pub struct Host {
     pub scene: CanvasSceneInput<u32>,

@@ -37,13 +37,13 @@ pub(super) type Slot<N> = Arc<Mutex<Option<LayoutFrame<N>>>>;
 
 /// Everything the worker thread owns.
 pub(super) struct Worker<N> {
-    pub(super) scene: CanvasSceneInput<N>,
-    pub(super) extras: LayoutExtras<N>,
-    pub(super) layout: RapierLayout<N>,
-    pub(super) state: RapierLayoutState,
-    pub(super) frame_time: Duration,
-    pub(super) commands: Receiver<(u64, Command<N>)>,
-    pub(super) slot: Slot<N>,
+    scene: CanvasSceneInput<N>,
+    extras: LayoutExtras<N>,
+    layout: RapierLayout<N>,
+    state: RapierLayoutState,
+    frame_time: Duration,
+    commands: Receiver<(u64, Command<N>)>,
+    slot: Slot<N>,
     /// Node id to its index in `scene.nodes`, rebuilt when the node set changes.
     index: Arc<NodeMap<N, usize>>,
     ids: Arc<Vec<N>>,
@@ -120,7 +120,8 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
                     Err(RecvTimeoutError::Disconnected) => return,
                 }
             }
-            previous = Some(Instant::now());
+            let started = Instant::now();
+            previous = Some(started);
             if self.scene.nodes.is_empty() {
                 // Nothing to lay out: publish the empty frame and rest.
                 self.steps += 1;
@@ -128,7 +129,6 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
                 continue;
             }
             let dt = self.frame_time;
-            let started = Instant::now();
             let deltas = self.layout.step(
                 &self.scene,
                 &mut self.state,

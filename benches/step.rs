@@ -310,6 +310,15 @@ fn large(c: &mut Criterion) {
         RapierLayoutConfig::force_directed(),
         "force_directed",
     );
+    // The same with every node a label box ("node <id>", 7 units a character by 20):
+    // what shape-aware contacts cost over disks.
+    persistent_from(
+        c,
+        "n10000_e25000",
+        generate::label_boxes(scene("n10000_e25000"), |_| false),
+        RapierLayoutConfig::force_directed(),
+        "force_directed_boxes",
+    );
     // The stress model: the first 150 frames, start included (its graphs rest within
     // them): the flat-out wall time to rest that docs/quality.md sets beside sfdp's.
     for name in ["3elt", "rgg_10000", "n10000_e25000"] {

@@ -1,7 +1,7 @@
 //! # graph-canvas-layout
 //!
 //! A graph layout for Rust graph canvases on a persistent [Rapier2D](rapier2d) world.
-//! Nodes are rigid disks, edges are joints, and the world lives from frame to frame, so
+//! Nodes are rigid disks or label boxes, edges are joints, and the world lives from frame to frame, so
 //! a thrown node keeps flying, a pinned node holds, and a graph edit does not stop
 //! everybody else's motion. The host keeps its own positions: each call returns the
 //! displacement of every node that moved.
@@ -71,7 +71,8 @@
 //! ## FAQ
 //! **Units?** World units are canvas pixels and seconds. Rapier's `length_unit` is set
 //! to 100 (a typical node-plus-edge size), which scales its contact tolerances, sleep
-//! threshold and speed cap to pixels. Mass is `density × disk area`.
+//! threshold and speed cap to pixels. Mass is `density × disk area`; a label box
+//! ([`CanvasNode::with_rect`]) weighs what a disk of the default radius weighs.
 //!
 //! **Why is nothing moving?** A graph already at its rest lengths does not move; bodies
 //! asleep stay asleep until something touches them. With
@@ -169,6 +170,7 @@ pub use input::node_forces::{AxisLock, AxisTarget, NodeForces, RingTarget};
 pub use input::petgraph::{spiral_position, NodeStart, SPIRAL_SPACING};
 pub use input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
 pub use input::scene_file::{SceneFile, SceneFileNode};
+pub use input::shape::NodeShape;
 pub use input::snapshot_error::SnapshotError;
 pub use input::topology::topology_hash;
 pub use input::validation::{LayoutError, MAX_COORDINATE};

@@ -5,10 +5,12 @@
 use std::collections::{HashMap, VecDeque};
 use std::hash::Hash;
 
-use euclid::default::Point2D;
+use euclid::default::{Point2D, Vector2D};
 
-use crate::input::scene::CanvasSceneInput;
+use crate::forces::collide::shapes::contact;
+use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::layout::IdHasher;
+use crate::world::bindings::ColliderSpec;
 
 /// Each node's index in the scene's node list, by id.
 fn index_of<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> HashMap<&N, usize, IdHasher> {
@@ -77,18 +79,44 @@ pub fn mean_edge_length<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> Op
     })
 }
 
-/// Pairs of nodes whose disks overlap by more than `tolerance` world units (radius 0
-/// counts as `default_radius`). Grid-bucketed: about O(n) for spread-out layouts.
+/// Pairs of nodes whose outlines overlap by more than `tolerance` world units: disks
+/// by their radius (0 counts as `default_radius`), boxes
+/// ([`NodeShape::Rect`](crate::NodeShape::Rect)) by their sides, so two boxes overlap
+/// when each is more than `tolerance` inside the other on both axes. Grid-bucketed:
+/// about O(n) for spread-out layouts.
+///
+/// # Example
+/// ```
+/// use graph_canvas_layout::{euclid::default::Point2D, quality, CanvasNode, CanvasSceneInput};
+/// // Two label boxes of 60 × 20, side by side with 2 units of overlap, and a disk apart.
+/// let scene = CanvasSceneInput::<u32>::new(
+///     vec![
+///         CanvasNode::new(0, Point2D::new(0.0, 0.0)).with_rect(60.0, 20.0),
+///         CanvasNode::new(1, Point2D::new(58.0, 5.0)).with_rect(60.0, 20.0),
+///         CanvasNode::new(2, Point2D::new(0.0, 60.0)),
+///     ],
+///     vec![],
+/// );
+/// assert_eq!(quality::overlapping_pairs(&scene, 16.0, 1.0), 1);
+/// assert_eq!(quality::overlapping_pairs(&scene, 16.0, 3.0), 0);
+/// ```
 pub fn overlapping_pairs<N: Clone + Eq + Hash>(
     scene: &CanvasSceneInput<N>,
     default_radius: f32,
     tolerance: f32,
 ) -> usize {
-    let radius = |r: f32| if r > 0.0 { r } else { default_radius };
-    let max_r = scene
-        .nodes
+    let outline = |n: &CanvasNode<N>| {
+        let radius = if n.radius > 0.0 {
+            n.radius
+        } else {
+            default_radius
+        };
+        n.shape.collider(radius)
+    };
+    let shapes: Vec<ColliderSpec> = scene.nodes.iter().map(outline).collect();
+    let max_r = shapes
         .iter()
-        .map(|n| radius(n.radius))
+        .map(ColliderSpec::bounding_radius)
         .fold(0.0_f32, f32::max);
     let cell = (2.0 * max_r).max(1.0);
     let key = |p: Point2D<f32>| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
@@ -99,15 +127,18 @@ pub fn overlapping_pairs<N: Clone + Eq + Hash>(
     let mut count = 0;
     for (i, n) in scene.nodes.iter().enumerate() {
         let (kx, ky) = key(n.position);
+        let (inner_a, round_a) = shapes[i].inner_and_round();
         for dx in -1..=1 {
             for dy in -1..=1 {
                 let Some(bucket) = grid.get(&(kx + dx, ky + dy)) else {
                     continue;
                 };
                 for &j in bucket.iter().filter(|&&j| j > i) {
-                    let m = &scene.nodes[j];
-                    let gap =
-                        (n.position - m.position).length() - radius(n.radius) - radius(m.radius);
+                    let (inner_b, round_b) = shapes[j].inner_and_round();
+                    let d = scene.nodes[j].position - n.position;
+                    let (_, gap) = contact(d, inner_a + inner_b, round_a + round_b, || {
+                        Vector2D::new(1.0, 0.0)
+                    });
                     if gap < -tolerance {
                         count += 1;
                     }

@@ -44,6 +44,25 @@ fn weight() -> impl Strategy<Value = f32> {
     ]
 }
 
+/// A box's side: a label's width or height, 0 (with the other 0: a disk again), or a
+/// bad value.
+fn side() -> impl Strategy<Value = f32> {
+    prop_oneof![
+        4 => prop_oneof![Just(20.0_f32), Just(63.0), Just(140.0)],
+        1 => Just(0.0_f32),
+        1 => prop_oneof![Just(-1.0_f32), Just(f32::NAN), Just(f32::INFINITY)],
+    ]
+}
+
+/// A box's corner radius: square, rounded, more than the box holds, or bad.
+fn corner() -> impl Strategy<Value = f32> {
+    prop_oneof![
+        3 => Just(0.0_f32),
+        2 => prop_oneof![Just(4.0_f32), Just(1_000.0)],
+        1 => prop_oneof![Just(-1.0_f32), Just(f32::NAN)],
+    ]
+}
+
 /// A node's forces: targets, a ring, a group, a lock, bad values, or none.
 fn node_forces() -> impl Strategy<Value = NodeForces> {
     let strength = prop_oneof![
@@ -76,6 +95,7 @@ fn action() -> impl Strategy<Value = Action> {
         1 => id.clone().prop_map(Action::Poison),
         1 => (0usize..40, weight()).prop_map(|(i, w)| Action::Weigh(i, w)),
         1 => (id.clone(), node_forces()).prop_map(|(i, f)| Action::Force(i, f)),
+        1 => (id.clone(), side(), side(), corner()).prop_map(|(i, w, h, c)| Action::Reshape(i, w, h, c)),
         1 => Just(Action::Resume),
         6 => frame_time().prop_map(Action::Step),
     ]
@@ -99,6 +119,7 @@ fn long_action() -> impl Strategy<Value = Action> {
         1 => Just(Action::Settle),
         1 => (0usize..40, weight()).prop_map(|(i, w)| Action::Weigh(i, w)),
         1 => (id.clone(), node_forces()).prop_map(|(i, f)| Action::Force(i, f)),
+        1 => (id.clone(), side(), side(), corner()).prop_map(|(i, w, h, c)| Action::Reshape(i, w, h, c)),
         1 => Just(Action::Resume),
         12 => frame_time().prop_map(Action::Step),
     ]

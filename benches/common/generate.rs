@@ -200,3 +200,28 @@ pub fn by_name(name: &str) -> Option<CanvasSceneInput<u32>> {
         _ => None,
     }
 }
+
+/// The label the outside checks draw node `id` with, and its box: "node <id>", 7 units a
+/// character, 20 high.
+pub fn label_box(id: u32) -> (String, f32, f32) {
+    let label = format!("node {id}");
+    let width = 7.0 * label.len() as f32;
+    (label, width, 20.0)
+}
+
+/// `scene` with every node a labelled box ([`label_box`]), except those `disk(id)` keeps
+/// a disk of radius 16.
+pub fn label_boxes(
+    mut scene: CanvasSceneInput<u32>,
+    disk: impl Fn(u32) -> bool,
+) -> CanvasSceneInput<u32> {
+    for node in &mut scene.nodes {
+        if disk(node.id) {
+            node.radius = 16.0;
+        } else {
+            let (label, width, height) = label_box(node.id);
+            *node = node.clone().with_rect(width, height).with_label(label);
+        }
+    }
+    scene
+}

@@ -4,10 +4,12 @@
 //! - right-click a node to pin or unpin it;
 //! - click a node to select it, then shift-click another to add or remove the edge;
 //! - the side panel adds and removes nodes, switches presets, joints and the
-//!   force-directed configuration, and shows frame time, step time and convergence.
+//!   force-directed configuration, draws the nodes as label boxes ("node <id>") or
+//!   disks, and shows frame time, step time and convergence.
 //!
-//! `cargo run --release -p graph-canvas-layout-demo [scene.json] [--frames N]`
-//! (`--frames N` quits after N frames, for unattended checks).
+//! `cargo run --release -p graph-canvas-layout-demo [scene.json] [--boxes] [--frames N]`
+//! (`--boxes` starts with labels as boxes; `--frames N` quits after N frames, for
+//! unattended checks).
 
 use std::time::Instant;
 
@@ -15,8 +17,12 @@ use eframe::egui;
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::{
     Accuracy, CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, EdgeJoint, Layout,
-    LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState, SceneFile,
+    LayoutExtras, NodeShape, RapierLayout, RapierLayoutConfig, RapierLayoutState, SceneFile,
 };
+
+/// A label box's width per character and height, in world units.
+const CHAR_WIDTH: f32 = 7.0;
+const BOX_HEIGHT: f32 = 20.0;
 
 struct Demo {
     scene: CanvasSceneInput<u32>,
@@ -32,6 +38,8 @@ struct Demo {
     zoom: f32,
     pan: egui::Vec2,
     preset: Preset,
+    /// Whether nodes are label boxes ("node <id>") rather than disks.
+    boxes: bool,
     frames_left: Option<u64>,
 }
 
@@ -52,6 +60,7 @@ impl Demo {
             zoom: 0.45,
             pan: egui::Vec2::ZERO,
             preset: Preset::Stress,
+            boxes: false,
             frames_left,
         }
     }
@@ -71,9 +80,29 @@ impl Demo {
             .iter()
             .rev()
             .find(|n| {
-                self.to_screen(rect, n.position).distance(p) <= n.radius.max(16.0) * self.zoom + 2.0
+                let d = p - self.to_screen(rect, n.position);
+                match n.shape {
+                    NodeShape::Rect { width, height, .. } => {
+                        d.x.abs() <= 0.5 * width * self.zoom + 2.0
+                            && d.y.abs() <= 0.5 * height * self.zoom + 2.0
+                    }
+                    NodeShape::Disk => d.length() <= n.radius.max(16.0) * self.zoom + 2.0,
+                }
             })
             .map(|n| n.id)
+    }
+
+    /// Every node a label box of "node <id>" (with [`boxes`](Self::boxes)) or a disk.
+    fn apply_shapes(&mut self) {
+        for n in &mut self.scene.nodes {
+            *n = if self.boxes {
+                let label = format!("node {}", n.id);
+                let width = CHAR_WIDTH * label.len() as f32 + 8.0;
+                n.clone().with_rect(width, BOX_HEIGHT).with_label(label)
+            } else {
+                n.clone().with_disk()
+            };
+        }
     }
 
     fn toggle_edge(&mut self, a: u32, b: u32) {
@@ -130,6 +159,10 @@ impl Demo {
             ui.radio_value(&mut self.layout.config.edge_joint, joint, name);
         }
         ui.separator();
+        if ui.checkbox(&mut self.boxes, "labels as boxes").changed() {
+            self.apply_shapes();
+        }
+        ui.separator();
         if ui.button("add node").clicked() {
             let id = self.next_id;
             self.next_id += 1;
@@ -146,6 +179,7 @@ impl Demo {
                 self.scene.edges.push(CanvasEdge::new(s, id));
             }
             self.selected = Some(id);
+            self.apply_shapes();
         }
         if ui
             .add_enabled(
@@ -234,18 +268,31 @@ impl Demo {
                 egui::Color32::from_rgb(31, 119, 180)
             };
             let c = self.to_screen(rect, n.position);
-            painter.circle(
-                c,
-                n.radius.max(1.0) * self.zoom,
-                fill,
-                egui::Stroke::new(1.0, egui::Color32::WHITE),
+            let selected = Some(n.id) == self.selected;
+            let outline = egui::Stroke::new(
+                if selected { 2.0 } else { 1.0 },
+                if selected {
+                    egui::Color32::BLACK
+                } else {
+                    egui::Color32::WHITE
+                },
             );
-            if Some(n.id) == self.selected {
-                painter.circle_stroke(
-                    c,
-                    n.radius * self.zoom + 3.0,
-                    egui::Stroke::new(2.0, egui::Color32::BLACK),
-                );
+            match n.shape {
+                NodeShape::Rect { width, height, .. } => {
+                    let size = egui::vec2(width, height) * self.zoom;
+                    let r = egui::Rect::from_center_size(c, size);
+                    painter.rect(r, 2.0, fill, outline, egui::StrokeKind::Inside);
+                    painter.text(
+                        c,
+                        egui::Align2::CENTER_CENTER,
+                        n.label.as_deref().unwrap_or(""),
+                        egui::FontId::monospace(11.0 * self.zoom),
+                        egui::Color32::WHITE,
+                    );
+                }
+                NodeShape::Disk => {
+                    painter.circle(c, n.radius.max(1.0) * self.zoom, fill, outline);
+                }
             }
         }
     }
@@ -393,6 +440,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .position(|a| a == "--frames")
         .and_then(|i| args.get(i + 1))
         .and_then(|n| n.parse().ok());
+    let boxes = args.iter().any(|a| a == "--boxes");
     let path = args
         .iter()
         .find(|a| a.ends_with(".json"))
@@ -413,7 +461,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     eframe::run_native(
         "graph-canvas-layout demo",
         options,
-        Box::new(move |_cc| Ok(Box::new(Demo::new(scene, frames_left)))),
+        Box::new(move |_cc| {
+            let mut demo = Demo::new(scene, frames_left);
+            demo.boxes = boxes;
+            demo.apply_shapes();
+            Ok(Box::new(demo))
+        }),
     )?;
     Ok(())
 }
@@ -442,6 +495,40 @@ mod tests {
         let choices = accuracy_choices(own, Preset::ForceDirected.config().accuracy);
         assert_eq!(choices.len(), 5, "{choices:?}");
         assert!(choices.iter().any(|(_, a)| *a == own));
+    }
+
+    #[test]
+    fn labels_as_boxes_shape_every_node_and_back() {
+        let scene = CanvasSceneInput::new(
+            vec![
+                CanvasNode::new(7, Point2D::new(0.0, 0.0)).with_radius(16.0),
+                CanvasNode::new(1234, Point2D::new(50.0, 0.0)).with_radius(16.0),
+            ],
+            vec![CanvasEdge::new(7, 1234)],
+        );
+        let mut demo = Demo::new(scene, None);
+        demo.boxes = true;
+        demo.apply_shapes();
+        let widths: Vec<_> = demo.scene.nodes.iter().map(|n| n.shape).collect();
+        assert_eq!(
+            widths,
+            [
+                NodeShape::Rect {
+                    width: 50.0,
+                    height: 20.0,
+                    corner_radius: 0.0
+                },
+                NodeShape::Rect {
+                    width: 71.0,
+                    height: 20.0,
+                    corner_radius: 0.0
+                },
+            ],
+            "\"node 7\" and \"node 1234\" at 7 units a character, 8 of room"
+        );
+        demo.boxes = false;
+        demo.apply_shapes();
+        assert!(demo.scene.nodes.iter().all(|n| n.shape == NodeShape::Disk));
     }
 
     #[test]

@@ -1,11 +1,12 @@
-//! SVG pictures of a scene for the examples: edges, disks coloured by the caller, an
+//! SVG pictures of a scene for the examples: edges, disks and label boxes coloured by
+//! the caller, an
 //! optional trail (a thrown node's path, dotted every 10 frames) and guides (the rings
 //! and lines the per-node forces aim at).
 
 use std::fmt::Write as _;
 
 use graph_canvas_layout::euclid::default::Point2D;
-use graph_canvas_layout::CanvasSceneInput;
+use graph_canvas_layout::{CanvasSceneInput, NodeShape};
 
 /// A shape drawn under the graph, in world units.
 #[derive(Clone, Copy, Debug)]
@@ -138,12 +139,31 @@ pub fn svg(
     }
     for n in &scene.nodes {
         let (x, y) = at(n.position);
-        let r = if n.radius > 0.0 { n.radius } else { 16.0 };
-        let _ = writeln!(
-            out,
-            r##"<circle cx="{x:.1}" cy="{y:.1}" r="{r}" fill="{}" fill-opacity="0.8" stroke="white"/>"##,
-            colour(n.id)
-        );
+        let fill = colour(n.id);
+        let _ = match n.shape {
+            NodeShape::Rect {
+                width,
+                height,
+                corner_radius,
+            } => {
+                // A label box, its label inside.
+                let (left, top) = (x - 0.5 * width, y - 0.5 * height);
+                let label = n.label.as_deref().unwrap_or("");
+                writeln!(
+                    out,
+                    r##"<rect x="{left:.1}" y="{top:.1}" width="{width:.1}" height="{height:.1}" rx="{corner_radius:.1}" fill="{fill}" fill-opacity="0.85" stroke="white"/><text x="{x:.1}" y="{:.1}" font-size="{:.1}" text-anchor="middle" fill="white">{label}</text>"##,
+                    y + 0.3 * height,
+                    0.6 * height
+                )
+            }
+            NodeShape::Disk => {
+                let r = if n.radius > 0.0 { n.radius } else { 16.0 };
+                writeln!(
+                    out,
+                    r##"<circle cx="{x:.1}" cy="{y:.1}" r="{r}" fill="{fill}" fill-opacity="0.8" stroke="white"/>"##
+                )
+            }
+        };
     }
     out.push_str("</svg>\n");
     out

@@ -62,6 +62,15 @@ fn config(u: &mut Unstructured) -> Result<RapierLayoutConfig> {
 }
 
 /// A coordinate: mostly on the canvas, sometimes anything an `f32` holds.
+/// A box's side: a label's, 0, or any bits.
+fn side(u: &mut Unstructured) -> Result<f32> {
+    Ok(match u.int_in_range(0..=4)? {
+        0 => f32::from_bits(u.arbitrary()?),
+        1 => 0.0,
+        n => 20.0 * n as f32,
+    })
+}
+
 fn coordinate(u: &mut Unstructured) -> Result<f32> {
     Ok(match u.int_in_range(0..=9)? {
         0 => f32::from_bits(u.arbitrary()?),
@@ -85,7 +94,7 @@ fn frame_time(u: &mut Unstructured) -> Result<f32> {
 
 fn action(u: &mut Unstructured) -> Result<Action> {
     let id = |u: &mut Unstructured| u.int_in_range(0..=IDS - 1);
-    Ok(match u.int_in_range(0..=16)? {
+    Ok(match u.int_in_range(0..=17)? {
         0 => Action::AddNode(id(u)?, coordinate(u)?, coordinate(u)?),
         1 => Action::AddDragged(id(u)?, coordinate(u)?, coordinate(u)?),
         2 => Action::RemoveNode(id(u)?),
@@ -110,6 +119,15 @@ fn action(u: &mut Unstructured) -> Result<Action> {
         ),
         15 if u.ratio(1, 2)? => Action::Force(id(u)?, node_forces(u)?),
         16 if u.ratio(1, 4)? => Action::Resume,
+        17 if u.ratio(1, 2)? => Action::Reshape(
+            id(u)?,
+            side(u)?,
+            side(u)?,
+            match u.int_in_range(0..=3)? {
+                0 => f32::from_bits(u.arbitrary()?),
+                n => (n - 1) as f32 * 8.0,
+            },
+        ),
         _ => Action::Step(frame_time(u)?),
     })
 }

@@ -16,6 +16,7 @@ use crate::input::topology::Topology;
 use crate::input::validation::node_is_valid;
 use crate::layout::{IdHasher, LayoutExtras};
 use crate::world::bindings::{ColliderSpec, NodeAvatarBinding, SceneBodyKind};
+use crate::world::nodes::body_mass;
 use crate::world::rapier_joint::scaled_spring;
 use crate::world::RapierSceneWorld;
 
@@ -305,7 +306,7 @@ fn insert_missing_nodes<N: Clone + Eq + Hash>(
                     )
                 });
                 if held(&node.id) {
-                    seating.occupy(position, radius_of(config, node));
+                    seating.occupy(position, shape_of(config, node).bounding_radius());
                     (position, false)
                 } else {
                     around.clear();
@@ -316,14 +317,21 @@ fn insert_missing_nodes<N: Clone + Eq + Hash>(
                             .flatten()
                             .filter_map(|&j| world.get_position(&scene.nodes[j].id)),
                     );
-                    match seating.seat(position, radius_of(config, node), &around) {
+                    match seating.seat(position, shape_of(config, node).bounding_radius(), &around)
+                    {
                         Some(seat) => (seat, true),
                         None => (position, false),
                     }
                 }
             }
         };
-        world.insert_node(&binding_for(config, node), start);
+        let binding = binding_for(config, node);
+        world.insert_node(&binding, start);
+        if !matches!(binding.collider, ColliderSpec::Circle { .. }) {
+            if let Some(s) = world.slot_of(&node.id) {
+                world.set_mass_at(s, mass_of(config, binding.collider));
+            }
+        }
         world.rebase_initial_position(&node.id, position);
         inserted.push((node.id.clone(), seated));
         let before = old.and_then(|w| Some(*w.host_at(w.slot_of(&node.id)?)));
@@ -384,25 +392,50 @@ pub(super) fn radius_of<N>(config: &RapierLayoutConfig, node: &CanvasNode<N>) ->
     if node.radius > 0.0 && node.radius.is_finite() {
         node.radius
     } else {
-        let default = config.default_radius;
-        if default.is_finite() && default >= 0.0 {
-            default
-        } else {
-            16.0
-        }
+        default_radius(config)
     }
 }
 
-/// How the node's body is built: a dynamic disk of the configured material.
+/// The configured default radius (an unusable one counts as 16).
+fn default_radius(config: &RapierLayoutConfig) -> f32 {
+    let default = config.default_radius;
+    if default.is_finite() && default >= 0.0 {
+        default
+    } else {
+        16.0
+    }
+}
+
+/// The node's outline as the world stores it: the disk of [`radius_of`], or its box
+/// (rounded where its corners are), with finite, non-negative extents.
+pub(super) fn shape_of<N>(config: &RapierLayoutConfig, node: &CanvasNode<N>) -> ColliderSpec {
+    node.shape.collider(radius_of(config, node))
+}
+
+/// A body's mass in the layout: a disk's `density × π r²`, a box's that of a disk of
+/// the default radius, so a box throws and settles the same whatever its size.
+pub(super) fn mass_of(config: &RapierLayoutConfig, shape: ColliderSpec) -> f32 {
+    let density = config.material.density;
+    match shape {
+        ColliderSpec::Circle { .. } => body_mass(shape, density),
+        _ => body_mass(
+            ColliderSpec::Circle {
+                radius: default_radius(config),
+            },
+            density,
+        ),
+    }
+}
+
+/// How the node's body is built: a dynamic body of the node's shape and the configured
+/// material.
 fn binding_for<N: Clone>(
     config: &RapierLayoutConfig,
     node: &CanvasNode<N>,
 ) -> NodeAvatarBinding<N> {
     NodeAvatarBinding {
         node_id: node.id.clone(),
-        collider: ColliderSpec::Circle {
-            radius: radius_of(config, node),
-        },
+        collider: shape_of(config, node),
         material: config.material,
         body_kind: SceneBodyKind::Dynamic,
     }

@@ -16,6 +16,7 @@ use crate::layout::LayoutExtras;
 use crate::stress::graph::{Graph, UNREACHED};
 use crate::stress::model::SparseStress;
 use crate::stress::start::{global_start, StartPlan};
+use crate::world::bindings::ColliderSpec;
 use crate::world::RapierSceneWorld;
 
 /// The gap, in world units, the hop length leaves between two seated disks.
@@ -59,7 +60,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             _ if global || (stress.start == StressStart::HostPositions && stress.fit_length) => {
                 let plan = plan_for(&stress, world, graph.len());
                 let radii: Vec<f32> = (0..world.slot_count())
-                    .map(|s| world.shape_at(s).bounding_radius())
+                    .map(|s| seating_radius(world.shape_at(s)))
                     .collect();
                 let start = global_start(&graph, &model, &radii, plan);
                 if global {
@@ -75,6 +76,17 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         };
         world.set_hop_length(hop);
         Some(model)
+    }
+}
+
+/// The radius a node counts with when the hop length is fitted: a disk's own, and for a
+/// box that of the disk of the same area. A box's bounding circle (63 units across for a
+/// 63 × 20 label) would spread the picture for the corners' sake; the contacts part what
+/// the area-equal disks leave touching.
+fn seating_radius(shape: ColliderSpec) -> f32 {
+    match shape {
+        ColliderSpec::Circle { radius } => radius,
+        _ => (shape.area() / std::f32::consts::PI).sqrt(),
     }
 }
 

@@ -16,7 +16,7 @@ use rapier2d::prelude::{RigidBodyType, Vector};
 
 use super::disturbance::Disturbances;
 use super::drag::{release_velocity, track_drag, Drive, Flight};
-use super::edits::radius_of;
+use super::edits::{mass_of, shape_of};
 use super::matching::{NodeMatch, NO_SLOT};
 use super::RapierLayout;
 use crate::config::{BodyKindPolicy, RapierLayoutConfig};
@@ -106,8 +106,7 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
         let policy = self.config.body_kind_policy;
         let mut disturbed = false;
         if m.valid {
-            let radius = radius_of(self.config, node);
-            disturbed |= sync_radius(self.world, s, radius, self.config.material.density);
+            disturbed |= sync_shape(self.world, s, self.config, node);
         }
         let host = node.position;
         let (sync, anchor) = self.world.host_and_anchor_mut(s);
@@ -249,20 +248,43 @@ fn desired_type(
     })
 }
 
-/// A radius edit reshapes the disk in place; returns whether the radius changed.
-fn sync_radius<N: Clone + Eq + Hash>(
+/// A radius or shape edit reshapes the body in place (its mass follows, as
+/// [`mass_of`] says); returns whether the shape changed.
+fn sync_shape<N: Clone + Eq + Hash>(
     world: &mut RapierSceneWorld<N>,
     s: usize,
-    radius: f32,
-    density: f32,
+    config: &RapierLayoutConfig,
+    node: &CanvasNode<N>,
 ) -> bool {
-    match world.shape_at(s) {
-        ColliderSpec::Circle { radius: r } if r.to_bits() != radius.to_bits() => {
-            world.set_shape_at(s, ColliderSpec::Circle { radius }, density);
-            true
+    let (current, wanted) = (world.shape_at(s), shape_of(config, node));
+    let same = match (current, wanted) {
+        (ColliderSpec::Circle { radius: a }, ColliderSpec::Circle { radius: b }) => {
+            a.to_bits() == b.to_bits()
         }
+        (ColliderSpec::Rect { half_extents: a }, ColliderSpec::Rect { half_extents: b }) => {
+            same_bits(a, b)
+        }
+        (
+            ColliderSpec::RoundRect {
+                half_extents: a,
+                corner_radius: ca,
+            },
+            ColliderSpec::RoundRect {
+                half_extents: b,
+                corner_radius: cb,
+            },
+        ) => same_bits(a, b) && ca.to_bits() == cb.to_bits(),
         _ => false,
+    };
+    if !same {
+        world.set_shape_at(s, wanted, mass_of(config, wanted));
     }
+    !same
+}
+
+/// Whether two vectors are the same bit for bit.
+fn same_bits(a: Vector2D<f32>, b: Vector2D<f32>) -> bool {
+    a.x.to_bits() == b.x.to_bits() && a.y.to_bits() == b.y.to_bits()
 }
 
 /// Unusable input: holds the body still where it is, and anchors it there.

@@ -185,8 +185,10 @@ pub enum ContactModel {
     /// with the other [`force_directed`](crate::RapierLayoutConfig::force_directed)
     /// settings, `n10000_e25000` steps in 17.0 ms at the median and 19.6 at the 95th
     /// percentile, against 49.3 and 62.4 ms with rapier's contacts (one session), and
-    /// rests with 69 overlapping pairs against 89. The trade: disks only (a node's bounding circle),
-    /// no friction, restitution or contact events (with
+    /// rests with 69 overlapping pairs against 89. Disks and label boxes
+    /// ([`NodeShape`](crate::NodeShape)) are parted by their outlines (a box with boxes
+    /// costs 1.42 × a disk with disks on that graph, `docs/shapes.md`). The trade: no
+    /// friction, restitution or contact events (with
     /// [`RapierLayoutConfig::contact_events`](crate::RapierLayoutConfig::contact_events)
     /// on, contacts are rapier's), and contacts are not solved together with rapier
     /// joints (ropes and rods) in the same pass.

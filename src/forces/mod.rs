@@ -34,7 +34,7 @@ use crate::world::RapierSceneWorld;
 
 pub(crate) mod barnes_hut;
 mod center;
-mod collide;
+pub(crate) mod collide;
 mod group;
 pub(crate) mod many_body;
 mod position;

@@ -10,6 +10,7 @@ pub(crate) mod node_forces;
 pub(crate) mod petgraph;
 pub(crate) mod scene;
 pub(crate) mod scene_file;
+pub(crate) mod shape;
 pub(crate) mod snapshot_error;
 pub(crate) mod topology;
 pub(crate) mod validation;

@@ -4,6 +4,8 @@
 use euclid::default::{Point2D, Rect};
 use serde::{Deserialize, Serialize};
 
+use crate::input::shape::NodeShape;
+
 /// One node of the host's graph, as the host sees it this frame.
 ///
 /// # Example
@@ -19,9 +21,14 @@ pub struct CanvasNode<N> {
     /// Where the host currently draws the node, in world units (canvas pixels).
     pub position: Point2D<f32>,
     /// Radius of the node's disk in world units; `0.0` means the layout's default radius.
+    /// A box ([`shape`](Self::shape)) ignores it.
     pub radius: f32,
     /// Optional text the host shows; layouts ignore it.
     pub label: Option<String>,
+    /// The node's outline, which the layout keeps apart from the others: the disk of
+    /// [`radius`](Self::radius) (the default) or a box ([`NodeShape`]).
+    #[serde(default)]
+    pub shape: NodeShape,
 }
 
 impl<N> CanvasNode<N> {
@@ -32,6 +39,7 @@ impl<N> CanvasNode<N> {
             position,
             radius: 0.0,
             label: None,
+            shape: NodeShape::Disk,
         }
     }
 
@@ -46,6 +54,60 @@ impl<N> CanvasNode<N> {
     #[must_use]
     pub fn with_radius(mut self, radius: f32) -> Self {
         self.radius = radius;
+        self
+    }
+
+    /// This node as an axis-aligned box of `width` × `height` world units, centred on
+    /// its position and level at all times (a label box). The layout's contacts keep it
+    /// from overlapping other nodes by its outline; it weighs what a default disk
+    /// weighs, whatever its size ([`NodeShape`] says what else a box changes).
+    /// Non-finite or negative sides are bad input
+    /// ([`LayoutError::InvalidShape`](crate::LayoutError::InvalidShape)).
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasNode};
+    /// let label = "node 17";
+    /// // 7 units a character, 20 high: the box the host draws the label in.
+    /// let node = CanvasNode::new(17_u32, Point2D::origin())
+    ///     .with_rect(7.0 * label.len() as f32, 20.0)
+    ///     .with_label(label);
+    /// assert_eq!(node.radius, 0.0); // a box ignores its radius
+    /// ```
+    #[must_use]
+    pub fn with_rect(mut self, width: f32, height: f32) -> Self {
+        self.shape = NodeShape::Rect {
+            width,
+            height,
+            corner_radius: 0.0,
+        };
+        self
+    }
+
+    /// This node as a box of `width` × `height` with corners rounded to
+    /// `corner_radius` (at most half the shorter side), as
+    /// [`with_rect`](Self::with_rect) otherwise.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasNode, NodeShape};
+    /// let node = CanvasNode::new(1_u32, Point2D::origin()).with_rounded_rect(80.0, 24.0, 6.0);
+    /// assert!(matches!(node.shape, NodeShape::Rect { corner_radius, .. } if corner_radius == 6.0));
+    /// ```
+    #[must_use]
+    pub fn with_rounded_rect(mut self, width: f32, height: f32, corner_radius: f32) -> Self {
+        self.shape = NodeShape::Rect {
+            width,
+            height,
+            corner_radius,
+        };
+        self
+    }
+
+    /// This node as the disk of its radius again (the default shape).
+    #[must_use]
+    pub fn with_disk(mut self) -> Self {
+        self.shape = NodeShape::Disk;
         self
     }
 

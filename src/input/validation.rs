@@ -42,6 +42,16 @@ pub enum LayoutError<N> {
         /// The radius the host gave.
         radius: f32,
     },
+    /// A node's box ([`NodeShape::Rect`](crate::NodeShape::Rect)) has a side or corner
+    /// radius that is NaN, infinite, negative or beyond 2 × [`MAX_COORDINATE`].
+    InvalidShape {
+        /// The node.
+        node: N,
+        /// `"width"`, `"height"` or `"corner radius"`.
+        part: &'static str,
+        /// The value the host gave.
+        value: f32,
+    },
     /// Two scene nodes share an id.
     DuplicateNode {
         /// The id.
@@ -103,6 +113,11 @@ impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
                 f,
                 "node {node:?} has an invalid radius {radius} (must be finite and >= 0)"
             ),
+            LayoutError::InvalidShape { node, part, value } => write!(
+                f,
+                "node {node:?} has an invalid box {part} {value} (must be finite, >= 0 and <= {:e})",
+                2.0 * MAX_COORDINATE
+            ),
             LayoutError::DuplicateNode {
                 node,
                 first,
@@ -140,9 +155,12 @@ impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
 impl<N: fmt::Debug> std::error::Error for LayoutError<N> {}
 
 /// Whether the layout can use this node's values: a position within ±[`MAX_COORDINATE`]
-/// and a finite, non-negative radius (0 means the default radius).
+/// a finite, non-negative radius (0 means the default radius) and a usable shape.
 pub(crate) fn node_is_valid<N>(node: &CanvasNode<N>) -> bool {
-    position_in_range(node.position) && node.radius.is_finite() && node.radius >= 0.0
+    position_in_range(node.position)
+        && node.radius.is_finite()
+        && node.radius >= 0.0
+        && node.shape.is_valid()
 }
 
 /// Whether both coordinates are within ±[`MAX_COORDINATE`] (and so finite).
@@ -203,6 +221,13 @@ fn collect<N: Clone + Eq + Hash>(
             report!(LayoutError::InvalidRadius {
                 node: node.id.clone(),
                 radius: node.radius,
+            });
+        }
+        if let Some((part, value)) = node.shape.problem() {
+            report!(LayoutError::InvalidShape {
+                node: node.id.clone(),
+                part,
+                value,
             });
         }
         if let Some(&j) = first.get(&node.id) {

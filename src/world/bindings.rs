@@ -61,6 +61,14 @@ pub enum ColliderSpec {
         /// Half width and half height in world units.
         half_extents: Vector2D<f32>,
     },
+    /// An axis-aligned rectangle with rounded corners.
+    RoundRect {
+        /// Half width and half height in world units, corners included.
+        half_extents: Vector2D<f32>,
+        /// The corners' radius in world units; at most the smaller half extent (larger
+        /// values count as that).
+        corner_radius: f32,
+    },
 }
 
 impl ColliderSpec {
@@ -69,6 +77,10 @@ impl ColliderSpec {
         match *self {
             ColliderSpec::Circle { radius } => std::f32::consts::PI * radius * radius,
             ColliderSpec::Rect { half_extents } => 4.0 * half_extents.x * half_extents.y,
+            ColliderSpec::RoundRect { .. } => {
+                let (inner, c) = self.inner_and_round();
+                4.0 * (inner.x + c) * (inner.y + c) - (4.0 - std::f32::consts::PI) * c * c
+            }
         }
     }
 
@@ -77,6 +89,31 @@ impl ColliderSpec {
         match *self {
             ColliderSpec::Circle { radius } => radius,
             ColliderSpec::Rect { half_extents } => half_extents.length(),
+            ColliderSpec::RoundRect { .. } => {
+                let (inner, c) = self.inner_and_round();
+                inner.length() + c
+            }
+        }
+    }
+
+    /// The shape as a box swept by a disk: the box's half extents and the disk's radius
+    /// (a disk is a point swept by itself, a rectangle a box swept by nothing). Two such
+    /// shapes touch where their centres' offset is the radii's sum from the box of both
+    /// half extents, which is what the layout's own contacts test.
+    pub(crate) fn inner_and_round(&self) -> (Vector2D<f32>, f32) {
+        match *self {
+            ColliderSpec::Circle { radius } => (Vector2D::zero(), radius),
+            ColliderSpec::Rect { half_extents } => (half_extents, 0.0),
+            ColliderSpec::RoundRect {
+                half_extents,
+                corner_radius,
+            } => {
+                let c = corner_radius
+                    .min(half_extents.x)
+                    .min(half_extents.y)
+                    .max(0.0);
+                (half_extents - Vector2D::new(c, c), c)
+            }
         }
     }
 }

@@ -35,7 +35,7 @@ pub(crate) mod bindings;
 mod bodies;
 mod edges;
 pub(crate) mod events;
-mod nodes;
+pub(crate) mod nodes;
 pub(crate) mod rapier_joint;
 mod recovery;
 pub(crate) mod saved;

@@ -144,18 +144,31 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         true
     }
 
-    /// Gives a node a new shape in place (radius edits), keeping its motion; its mass
-    /// follows the new area.
-    pub(crate) fn set_shape_at(&mut self, slot: usize, shape: ColliderSpec, density: f32) {
+    /// Gives a node a new shape and mass in place (radius and shape edits), keeping its
+    /// motion.
+    pub(crate) fn set_shape_at(&mut self, slot: usize, shape: ColliderSpec, mass: f32) {
         self.version += 1;
         let shape = sanitize_shape(shape);
-        let mass = body_mass(shape, density);
+        let mass = sane_mass(mass);
         let s = &mut self.slots[slot];
         s.shape = shape;
         s.mass = mass;
         if let Some(collider) = s.collider.and_then(|c| self.colliders.get_mut(c)) {
             collider.set_shape(shared_shape(shape));
         }
+        self.bodies[s.body].set_additional_mass(mass, true);
+    }
+
+    /// Gives a node a mass of its own in place (the layout's boxes weigh what a default
+    /// disk weighs), keeping its motion.
+    pub(crate) fn set_mass_at(&mut self, slot: usize, mass: f32) {
+        let mass = sane_mass(mass);
+        let s = &mut self.slots[slot];
+        if s.mass.to_bits() == mass.to_bits() {
+            return;
+        }
+        self.version += 1;
+        s.mass = mass;
         self.bodies[s.body].set_additional_mass(mass, true);
     }
 }
@@ -167,23 +180,47 @@ fn sanitize_shape(shape: ColliderSpec) -> ColliderSpec {
             radius: finite_or(radius, 0.0).max(0.0),
         },
         ColliderSpec::Rect { half_extents } => ColliderSpec::Rect {
-            half_extents: Vector2D::new(
-                finite_or(half_extents.x, 0.0).max(0.0),
-                finite_or(half_extents.y, 0.0).max(0.0),
-            ),
+            half_extents: sanitize_extents(half_extents),
         },
+        ColliderSpec::RoundRect {
+            half_extents,
+            corner_radius,
+        } => {
+            let half_extents = sanitize_extents(half_extents);
+            ColliderSpec::RoundRect {
+                half_extents,
+                corner_radius: finite_or(corner_radius, 0.0)
+                    .clamp(0.0, half_extents.x.min(half_extents.y)),
+            }
+        }
     }
+}
+
+fn sanitize_extents(half_extents: Vector2D<f32>) -> Vector2D<f32> {
+    Vector2D::new(
+        finite_or(half_extents.x, 0.0).max(0.0),
+        finite_or(half_extents.y, 0.0).max(0.0),
+    )
 }
 
 fn shared_shape(shape: ColliderSpec) -> SharedShape {
     match shape {
         ColliderSpec::Circle { radius } => SharedShape::ball(radius),
         ColliderSpec::Rect { half_extents } => SharedShape::cuboid(half_extents.x, half_extents.y),
+        ColliderSpec::RoundRect { .. } => {
+            let (inner, c) = shape.inner_and_round();
+            SharedShape::round_cuboid(inner.x, inner.y, c)
+        }
     }
 }
 
-fn body_mass(shape: ColliderSpec, density: f32) -> f32 {
-    let mass = finite_or(density, 0.0).max(0.0) * shape.area();
+/// A body's mass from its shape's area and the material's density.
+pub(crate) fn body_mass(shape: ColliderSpec, density: f32) -> f32 {
+    sane_mass(finite_or(density, 0.0).max(0.0) * shape.area())
+}
+
+/// A usable mass: finite, never below [`MIN_BODY_MASS`].
+fn sane_mass(mass: f32) -> f32 {
     if mass.is_finite() {
         mass.max(MIN_BODY_MASS)
     } else {

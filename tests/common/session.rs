@@ -7,8 +7,8 @@ use std::collections::{HashMap, HashSet};
 
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
-    AxisLock, CanvasSceneInput, DeltaMap, EdgeJoint, EdgeWeight, Layout, LayoutSnapshot,
-    NodeForces, RapierLayout, RapierLayoutConfig, MAX_COORDINATE,
+    AxisLock, CanvasNode, CanvasSceneInput, DeltaMap, EdgeJoint, EdgeWeight, Layout,
+    LayoutSnapshot, NodeForces, RapierLayout, RapierLayoutConfig, MAX_COORDINATE,
 };
 
 use super::{edge, node, Host, FRAME};
@@ -61,6 +61,9 @@ pub enum Action {
     /// Sets a node's forces (targets, group, lock; bad values too), or clears them when
     /// they are the default.
     Force(u32, NodeForces),
+    /// Makes a node a box of width × height with that corner radius (any values, bad
+    /// ones too), or a disk again when width and height are both 0.
+    Reshape(u32, f32, f32, f32),
     /// Calls at 1/60 s until the layout rests (at most 600).
     Settle,
     /// The host saves the layout and carries on with it restored from the save (a
@@ -143,6 +146,15 @@ pub fn apply_action(host: &mut Host<u32>, action: &Action) {
                 host.extras.forces.insert(id, forces);
             }
         }
+        Action::Reshape(id, width, height, corner) => {
+            if let Some(n) = host.scene.nodes.iter_mut().find(|n| n.id == id) {
+                *n = if width == 0.0 && height == 0.0 {
+                    n.clone().with_disk()
+                } else {
+                    n.clone().with_rounded_rect(width, height, corner)
+                };
+            }
+        }
         Action::Throw(..) | Action::Settle | Action::Resume | Action::Step(_) => {}
     }
 }
@@ -173,6 +185,8 @@ pub fn check(
 ) -> Result<(), String> {
     // What the layout takes as a usable position.
     let valid = |p: Point2D<f32>| p.x.abs() <= MAX_COORDINATE && p.y.abs() <= MAX_COORDINATE;
+    // A node the layout models this call: a usable position and shape.
+    let usable = |n: &CanvasNode<u32>| valid(n.position) && n.shape.is_valid();
     let ids: HashSet<u32> = before.nodes.iter().map(|n| n.id).collect();
     for (id, d) in deltas {
         ensure!(
@@ -191,10 +205,12 @@ pub fn check(
             !host.extras.dragging.contains(id),
             "delta for dragged node {id}: {d:?}"
         );
-        let p = before.nodes.iter().find(|n| n.id == *id).unwrap().position;
+        let n = before.nodes.iter().find(|n| n.id == *id).unwrap();
         ensure!(
-            valid(p),
-            "delta {d:?} for node {id} whose position {p:?} is unusable"
+            usable(n),
+            "delta {d:?} for node {id} whose position {:?} or shape {:?} is unusable",
+            n.position,
+            n.shape
         );
     }
     let Some(world) = host.layout.world() else {
@@ -204,7 +220,7 @@ pub fn check(
     // World and scene agree on the node set (nodes with usable values, plus bodies kept
     // for nodes whose values are unusable right now).
     for n in &before.nodes {
-        if valid(n.position) {
+        if usable(n) {
             ensure!(
                 world.contains_node(&n.id),
                 "scene node {} has no body",
@@ -218,7 +234,7 @@ pub fn check(
     ensure_eq!(world.body_count(), world.node_ids().count());
     check_joints(host, before)?;
     for n in &host.scene.nodes {
-        if !valid(n.position) {
+        if !usable(n) {
             continue;
         }
         let w = world.get_position(&n.id).unwrap();

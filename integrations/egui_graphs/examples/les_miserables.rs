@@ -1,5 +1,7 @@
-//! Les Misérables in egui_graphs' `GraphView`, laid out by graph-canvas-layout: drag a
-//! node and let go to throw it; the layout settles and says so in the top bar.
+//! Les Misérables in egui_graphs' `GraphView`, laid out by graph-canvas-layout, each
+//! character a box with its name inside ([`LabelBox`]) that the layout keeps clear of
+//! the others: drag a node and let go to throw it; the layout settles and says so in
+//! the top bar.
 //!
 //! `cargo run --release -p graph-canvas-layout-egui-graphs --example les_miserables
 //! [-- --log]`: with `--log` every frame prints the frame number, whether the layout
@@ -12,11 +14,28 @@ use egui_graphs::{
     Graph, GraphView, LayoutState, MetadataFrame, SettingsNavigation, SettingsStyle,
 };
 use graph_canvas_layout::SceneFile;
-use graph_canvas_layout_egui_graphs::{RapierGraphLayout, RapierGraphState};
-use petgraph::stable_graph::{NodeIndex, StableGraph};
+use graph_canvas_layout_egui_graphs::{LabelBox, RapierGraphLayout, RapierGraphState};
+use petgraph::stable_graph::{DefaultIx, NodeIndex, StableGraph};
 use petgraph::Undirected;
 
-type LesMis = Graph<(), (), Undirected>;
+type LesMis = Graph<(), (), Undirected, DefaultIx, LabelBox>;
+
+/// The characters, by node id (networkx's order, which the scene file follows).
+#[rustfmt::skip]
+const NAMES: [&str; 77] = [
+    "Napoleon", "Myriel", "MlleBaptistine", "MmeMagloire", "CountessDeLo", "Geborand",
+    "Champtercier", "Cravatte", "Count", "OldMan", "Valjean", "Labarre", "Marguerite",
+    "MmeDeR", "Isabeau", "Gervais", "Listolier", "Tholomyes", "Fameuil", "Blacheville",
+    "Favourite", "Dahlia", "Zephine", "Fantine", "MmeThenardier", "Thenardier", "Cosette",
+    "Javert", "Fauchelevent", "Bamatabois", "Perpetue", "Simplice", "Scaufflaire",
+    "Woman1", "Judge", "Champmathieu", "Brevet", "Chenildieu", "Cochepaille", "Pontmercy",
+    "Boulatruelle", "Eponine", "Anzelma", "Woman2", "MotherInnocent", "Gribier",
+    "MmeBurgon", "Jondrette", "Gavroche", "Gillenormand", "Magnon", "MlleGillenormand",
+    "MmePontmercy", "MlleVaubois", "LtGillenormand", "Marius", "BaronessT", "Mabeuf",
+    "Enjolras", "Combeferre", "Prouvaire", "Feuilly", "Courfeyrac", "Bahorel", "Bossuet",
+    "Joly", "Grantaire", "MotherPlutarch", "Gueulemer", "Babet", "Claquesous",
+    "Montparnasse", "Toussaint", "Child1", "Child2", "Brujon", "MmeHucheloup",
+];
 
 struct LesMiserables {
     graph: LesMis,
@@ -49,7 +68,8 @@ impl LesMiserables {
         for node in &file.nodes {
             if let Some(n) = graph.g_mut().node_weight_mut(index[&node.id]) {
                 n.set_location(Pos2::new(node.x, node.y));
-                n.set_label(node.id.to_string());
+                let name = NAMES.get(node.id as usize).copied().unwrap_or("?");
+                n.set_label(name.to_string());
             }
         }
         Self {

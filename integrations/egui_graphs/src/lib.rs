@@ -24,7 +24,7 @@
 //! app does, and a restored app lays the graph out again from the saved positions.
 //!
 //! Every frame [`RapierGraphLayout`] passes the graph's nodes (their locations, by node
-//! index), its edges (weight 1), the nodes egui_graphs is dragging and the state's pins to
+//! index, and their shapes as their displays draw them), its edges (weight 1), the nodes egui_graphs is dragging and the state's pins to
 //! [`RapierLayout::step`](graph_canvas_layout::Layout::step) with egui's stable frame
 //! time, and adds the deltas to the node locations. Releasing a dragged node throws it
 //! with the pointer's speed. While the layout moves it asks egui for another frame.
@@ -35,9 +35,23 @@
 //! `epsilon` of `f32::MIN_POSITIVE` runs it until the layout rests (a larger one may stop
 //! in the cooling's tail, where nodes still creep).
 //!
+//! # Node sizes and label boxes
+//! Each node is laid out with the outline its display draws, read from
+//! [`DisplayNode::closest_boundary_point`]: probed along the axes it gives a width and a
+//! height, and along the diagonal it tells a disk from a box. egui_graphs' default node
+//! is a disk of radius 5 with its label drawn outside it, where no layout can keep it
+//! clear; [`LabelBox`] draws the label inside a box the layout keeps apart from the
+//! others (`Graph<N, E, Ty, Ix, LabelBox>`). A display of your own works the same way,
+//! as long as its boundary is a disk or a level box around its centre.
+//!
 //! A `StableGraph` reuses a removed node's index for the next node added: when you
 //! remove a node and add another in the same frame, call
 //! [`RapierGraphState::forget_node`] so the new node does not take over the old body.
+
+mod label_box;
+mod outline;
+
+pub use label_box::{label_size, LabelBox, BOX_HEIGHT, CHAR_WIDTH};
 
 use std::collections::BTreeSet;
 use std::sync::{Arc, Mutex, PoisonError};
@@ -227,7 +241,8 @@ impl Layout<RapierGraphState> for RapierGraphLayout {
     }
 }
 
-/// The graph as the layout reads it: nodes by index at their locations, edges between
+/// The graph as the layout reads it: nodes by index at their locations, shaped as their
+/// displays draw them (`outline.rs`), edges between
 /// node indices, and the nodes being dragged (by their own flag, which egui_graphs sets
 /// as the pointer takes and drops a node).
 fn read_graph<N, E, Ty, Ix, Dn, De>(
@@ -246,9 +261,10 @@ fn read_graph<N, E, Ty, Ix, Dn, De>(
     extras.dragging.clear();
     for (index, node) in g.nodes_iter() {
         let p = node.location();
+        let canvas = CanvasNode::new(index.index(), Point2D::new(p.x, p.y));
         scene
             .nodes
-            .push(CanvasNode::new(index.index(), Point2D::new(p.x, p.y)));
+            .push(outline::shaped::<N, E, Ty, Ix, Dn>(canvas, node.display()));
         if node.dragged() {
             extras.dragging.insert(index.index());
         }

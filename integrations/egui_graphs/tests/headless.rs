@@ -4,13 +4,15 @@
 
 use egui::{Context, Pos2, RawInput, Rect};
 use egui_graphs::{
-    get_layout_state, set_layout_state, Graph, GraphView, SettingsInteraction, SettingsNavigation,
+    get_layout_state, set_layout_state, DefaultNodeShape, DisplayNode, Graph, GraphView,
+    SettingsInteraction, SettingsNavigation,
 };
 use graph_canvas_layout_egui_graphs::{RapierGraphLayout, RapierGraphState};
-use petgraph::stable_graph::{NodeIndex, StableGraph};
+use petgraph::stable_graph::{DefaultIx, NodeIndex, StableGraph};
 use petgraph::Undirected;
 
-type G = Graph<(), (), Undirected>;
+/// A graph whose nodes `D` draws.
+type G<D = DefaultNodeShape> = Graph<(), (), Undirected, DefaultIx, D>;
 
 /// Zachary's karate club, 34 members and 78 ties.
 #[rustfmt::skip]
@@ -26,23 +28,23 @@ const KARATE: &[(u32, u32)] = &[
     (30, 32), (30, 33), (31, 32), (31, 33), (32, 33),
 ];
 
-fn karate() -> G {
+fn karate<D: DisplayNode<(), (), Undirected, DefaultIx>>() -> G<D> {
     let edges: Vec<(u32, u32)> = KARATE.to_vec();
     G::from(&StableGraph::<(), (), Undirected>::from_edges(edges))
 }
 
 /// One egui context showing one graph view; the host's hand on the graph goes through
 /// `hand` between frames, as egui_graphs' own drag handling would.
-struct Window {
+struct Window<D: DisplayNode<(), (), Undirected, DefaultIx> = DefaultNodeShape> {
     ctx: Context,
-    graph: G,
+    graph: G<D>,
     time: f64,
 }
 
 const FRAME: f32 = 1.0 / 60.0;
 
-impl Window {
-    fn new(graph: G) -> Self {
+impl<D: DisplayNode<(), (), Undirected, DefaultIx>> Window<D> {
+    fn new(graph: G<D>) -> Self {
         Self {
             ctx: Context::default(),
             graph,
@@ -93,7 +95,7 @@ impl Window {
 
 #[test]
 fn a_graph_with_every_node_at_the_origin_lays_out_to_rest() {
-    let mut window = Window::new(karate());
+    let mut window = Window::<DefaultNodeShape>::new(karate());
     assert!(window
         .graph
         .nodes_iter()
@@ -104,8 +106,9 @@ fn a_graph_with_every_node_at_the_origin_lays_out_to_rest() {
     assert!(frames.is_some(), "karate did not rest within 300 frames");
     let positions: Vec<Pos2> = (0..34).map(|i| window.location(i)).collect();
     assert!(positions.iter().all(|p| p.x.is_finite() && p.y.is_finite()));
-    // Disks of the default radius 16 end apart; the layout's last projection leaves
-    // overlaps under a unit, so 31 units between centres is a generous floor.
+    // egui_graphs' default disks (radius 5, read from their display) end apart; the
+    // layout's last projection leaves overlaps under a unit, so 9 units between centres
+    // is a generous floor.
     let mut closest = f32::INFINITY;
     for (i, a) in positions.iter().enumerate() {
         for b in &positions[i + 1..] {
@@ -113,7 +116,7 @@ fn a_graph_with_every_node_at_the_origin_lays_out_to_rest() {
         }
     }
     assert!(
-        closest > 31.0,
+        closest > 9.0,
         "after {frames:?} frames two nodes are {closest} units apart"
     );
     let spread = positions
@@ -128,7 +131,7 @@ fn a_graph_with_every_node_at_the_origin_lays_out_to_rest() {
 
 #[test]
 fn a_pinned_node_holds_where_it_is() {
-    let mut window = Window::new(karate());
+    let mut window = Window::<DefaultNodeShape>::new(karate());
     window
         .graph
         .node_mut(NodeIndex::new(0))
@@ -156,7 +159,7 @@ fn a_pinned_node_holds_where_it_is() {
 
 #[test]
 fn a_node_let_go_mid_drag_flies_on() {
-    let mut window = Window::new(karate());
+    let mut window = Window::<DefaultNodeShape>::new(karate());
     window.settle(1_200).expect("karate rests");
     // Node 16 is a leaf of the club's edge; drag it away from the centre at 600 units/s.
     let centre = (0..34).fold(egui::Vec2::ZERO, |s, i| s + window.location(i).to_vec2()) / 34.0;
@@ -190,7 +193,7 @@ fn a_node_let_go_mid_drag_flies_on() {
 fn fast_forward_until_stable_lays_the_graph_out_in_one_frame() {
     // At rest every delta is exactly zero, so the smallest positive epsilon runs the
     // layout until nothing moves (a larger one may stop in the cooling's tail).
-    let mut window = Window::new(karate());
+    let mut window = Window::<DefaultNodeShape>::new(karate());
     let mut result = None;
     let state = window.frame(|_| ());
     assert!(!state.converged, "one frame does not lay karate out");

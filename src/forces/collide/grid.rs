@@ -20,10 +20,11 @@ const USUAL_SHARE: f64 = 0.9;
 pub(super) struct Grid {
     /// `(cell key, slot)` of every body with a finite position, sorted: the grid order.
     cells: Vec<(u64, u32)>,
-    /// The width of a cell, the motion a cell allows and the largest radius.
-    cell: f32,
+    /// The width and height of a cell, the motion a cell allows and the largest half
+    /// width and half height of a body's bounding box.
+    cell: Vector2D<f32>,
     usual: f32,
-    largest: f32,
+    largest: Vector2D<f32>,
     /// Scratch for the motions' quantile.
     lengths: Vec<f32>,
     /// The fast bodies' swept boxes `(left, right, top, bottom, body)`.
@@ -35,17 +36,22 @@ impl Grid {
     /// grid's order (cell by cell, row by row; bodies without a finite position are left
     /// out). [`pairs`](Self::pairs) takes the bodies in this order.
     ///
-    /// The cells are as wide as the largest disk plus twice the usual motion (that of
-    /// nine bodies in ten, up to a disk's width), so two bodies that may touch and move
-    /// no further are in the same or neighbouring cells. Wider cells would hold more
-    /// bodies, and every two bodies of neighbouring cells are tested.
+    /// The cells are as wide as the widest body plus twice the usual motion (that of
+    /// nine bodies in ten, up to a body's width), and as high as the highest body plus
+    /// that, so two bodies that may touch and move no further are in the same or
+    /// neighbouring cells. Larger cells would hold more bodies, and every two bodies of
+    /// neighbouring cells are tested: label boxes, wide and low, get wide and low cells.
+    /// `half` is each body's bounding box's half width and half height (a disk's radius
+    /// twice).
     pub(super) fn sort(
         &mut self,
         points: &[Point2D<f32>],
-        radius: &[f32],
+        half: &[Vector2D<f32>],
         motion: &[Vector2D<f32>],
     ) -> impl ExactSizeIterator<Item = u32> + '_ {
-        self.largest = radius.iter().copied().fold(0.0_f32, f32::max);
+        self.largest = half
+            .iter()
+            .fold(Vector2D::zero(), |l: Vector2D<f32>, &h| l.max(h));
         self.lengths.clear();
         self.lengths.extend(motion.iter().map(|m| m.length()));
         let usual = if self.lengths.is_empty() {
@@ -54,8 +60,9 @@ impl Grid {
             let at = ((self.lengths.len() - 1) as f64 * USUAL_SHARE) as usize;
             *self.lengths.select_nth_unstable_by(at, f32::total_cmp).1
         };
-        self.usual = usual.min(2.0 * self.largest);
-        self.cell = (2.0 * self.largest + 2.0 * self.usual).max(1.0);
+        self.usual = usual.min(2.0 * self.largest.x.max(self.largest.y));
+        let side = |largest: f32| (2.0 * largest + 2.0 * self.usual).max(1.0);
+        self.cell = Vector2D::new(side(self.largest.x), side(self.largest.y));
         let cell = self.cell;
         self.cells.clear();
         self.cells.extend(
@@ -63,13 +70,13 @@ impl Grid {
                 .iter()
                 .enumerate()
                 .filter(|(_, p)| p.is_finite())
-                .map(|(s, &p)| (key(index(p.x, cell), index(p.y, cell)), s as u32)),
+                .map(|(s, &p)| (key(index(p.x, cell.x), index(p.y, cell.y)), s as u32)),
         );
         self.cells.sort_unstable();
         self.cells.iter().map(|&(_, s)| s)
     }
 
-    /// The motion a cell allows (that of nine bodies in ten, up to a disk's width), from
+    /// The motion a cell allows (that of nine bodies in ten, up to a body's width), from
     /// the last [`sort`](Self::sort).
     pub(super) fn usual_motion(&self) -> f32 {
         self.usual
@@ -80,8 +87,7 @@ impl Grid {
     /// `points` and `motion` follow), once each and in order (by `a`, then `b`); then
     /// `pair(a, b, true)` for the bodies further apart that a body moving further than a
     /// cell allows may meet on its path, in no order and possibly twice. Together they
-    /// hold every two bodies that come within `radius[a] + radius[b]` of each other
-    /// as they move.
+    /// hold every two bodies whose bounding boxes (`half`) come to touch as they move.
     ///
     /// A fast body searches every cell along its path (in one pass over the bodies when
     /// the path crosses more rows than there are bodies) for the slower ones; two fast
@@ -92,7 +98,7 @@ impl Grid {
     pub(super) fn pairs(
         &mut self,
         points: &[Point2D<f32>],
-        radius: &[f32],
+        half: &[Vector2D<f32>],
         motion: &[Vector2D<f32>],
         mut pair: impl FnMut(u32, u32, bool) -> bool,
     ) {
@@ -126,7 +132,7 @@ impl Grid {
         // Bodies moving further than the cells allow search along their path, beyond
         // the neighbouring cells (those pairs came above).
         let (cell, usual) = (self.cell, self.usual);
-        let reach = 2.0 * self.largest + usual;
+        let reach = self.largest * 2.0 + Vector2D::new(usual, usual);
         let near = |a: usize, b: usize| {
             let ((row_a, column_a), (row_b, column_b)) =
                 (row_and_column(cells[a].0), row_and_column(cells[b].0));
@@ -141,13 +147,13 @@ impl Grid {
             let (lo, hi) = (from.min(to), from.max(to));
             // Padded by the radius and half the usual motion: two fast bodies whose
             // paths come within their radii and the usual motion overlap.
-            let r = radius[a] + 0.5 * usual;
+            let r = half[a] + Vector2D::new(0.5 * usual, 0.5 * usual);
             self.swept
-                .push((lo.x - r, hi.x + r, lo.y - r, hi.y + r, a as u32));
+                .push((lo.x - r.x, hi.x + r.x, lo.y - r.y, hi.y + r.y, a as u32));
             // Whether to go on (the neighbouring cells' pairs came above).
             let mut found = |b: usize| near(a, b) || pair(a.min(b) as u32, a.max(b) as u32, true);
-            let (top, bottom) = (index(lo.y - reach, cell), index(hi.y + reach, cell));
-            let (left, right) = (index(lo.x - reach, cell), index(hi.x + reach, cell));
+            let (top, bottom) = (index(lo.y - reach.y, cell.y), index(hi.y + reach.y, cell.y));
+            let (left, right) = (index(lo.x - reach.x, cell.x), index(hi.x + reach.x, cell.x));
             if (bottom - top) as usize >= cells.len() {
                 // A path across more rows than there are bodies (a drag across the
                 // canvas): one pass over the bodies finds the same cells as a search of
@@ -167,16 +173,16 @@ impl Grid {
                 // Only the columns the path passes near in this row: a long diagonal
                 // path's bounding box holds far more cells than the path. (A cell more
                 // on every side, for the rounding of far coordinates.)
-                let (row_top, cell64) = (y as f64 * f64::from(cell), f64::from(cell));
+                let (row_top, cell64) = (y as f64 * f64::from(cell.y), f64::from(cell.y));
                 let band = (
-                    (row_top - cell64) as f32 - reach,
-                    (row_top + 2.0 * cell64) as f32 + reach,
+                    (row_top - cell64) as f32 - reach.y,
+                    (row_top + 2.0 * cell64) as f32 + reach.y,
                 );
                 let Some((x0, x1)) = crossing(from, to, band) else {
                     continue;
                 };
-                let near_left = (index(x0 - reach, cell) - 1).max(left);
-                let near_right = (index(x1 + reach, cell) + 1).min(right);
+                let near_left = (index(x0 - reach.x, cell.x) - 1).max(left);
+                let near_right = (index(x1 + reach.x, cell.x) + 1).min(right);
                 let (start, end) = (key(near_left, y), key(near_right, y));
                 let first = cells.partition_point(|&(k, _)| k < start);
                 for (b, &(k2, _)) in cells.iter().enumerate().skip(first) {

@@ -35,9 +35,11 @@ use crate::world::RapierSceneWorld;
 mod grid;
 mod pairs;
 mod projection;
+pub(crate) mod shapes;
 
 use grid::Grid;
 use pairs::{BySlot, Pair, NONE};
+use shapes::box_contact;
 
 /// A sleeping body that an awake one would push into faster than this (world units per
 /// second: rapier's sleep threshold at the default length unit) wakes.
@@ -124,7 +126,14 @@ pub(crate) struct Collide {
     /// The buffer the two are merged into.
     merged: Vec<Pair>,
     points: Vec<Point2D<f32>>,
+    /// The bounding radius and bounding box's half extents, and the outline as a box
+    /// swept by a disk (`shapes.rs`).
     radius: Vec<f32>,
+    half: Vec<Vector2D<f32>>,
+    inner: Vec<Vector2D<f32>>,
+    round: Vec<f32>,
+    /// Whether any body is a box (else every pair is measured as two disks).
+    boxes: bool,
     inverse_mass: Vec<f32>,
     /// Each body's velocity during the solve, and what it was before.
     velocity: Vec<Vector2D<f32>>,
@@ -230,8 +239,16 @@ impl Collide {
         // Every body in a pair was read.
         for pair in &mut self.pairs {
             let (a, b) = (pair.a as usize, pair.b as usize);
-            let reach = self.radius[a] + self.radius[b];
-            pair.separation = (self.points[b] - self.points[a]).length() - reach;
+            let d = self.points[b] - self.points[a];
+            let outline = if self.boxes {
+                box_contact(&self.inner, &self.round, (a, b), d, || pair.normal)
+            } else {
+                None
+            };
+            pair.separation = match outline {
+                Some((_, separation)) => separation,
+                None => d.length() - (self.radius[a] + self.radius[b]),
+            };
         }
         for _ in 0..RELAX_PASSES {
             if self.pass(world, None, 1.0 / dt) < SETTLED_CHANGE {
@@ -266,7 +283,12 @@ impl Collide {
         by_slot.clear();
         by_slot.sleeping.extend_from_slice(&bodies.sleeping);
         for (s, &p) in bodies.points.iter().enumerate() {
-            by_slot.radius.push(world.shape_at(s).bounding_radius());
+            let shape = world.shape_at(s);
+            let (inner, round) = shape.inner_and_round();
+            by_slot.radius.push(shape.bounding_radius());
+            by_slot.inner.push(inner);
+            by_slot.round.push(round);
+            by_slot.half.push(inner + Vector2D::new(round, round));
             let (inverse_mass, velocity) = if bodies.pushed[s] {
                 (1.0 / world.mass_at(s), bodies.velocities[s])
             } else {

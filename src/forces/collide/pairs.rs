@@ -9,6 +9,7 @@
 
 use euclid::default::{Point2D, Vector2D};
 
+use super::shapes::box_contact;
 use super::{coincident_normal, Collide, SLEEPING_OVERLAP};
 
 /// Whether two bodies `d` apart (from the first to the second) that move `relative` to
@@ -54,7 +55,15 @@ pub(super) struct Pair {
 /// grid's order.
 #[derive(Debug, Default)]
 pub(super) struct BySlot {
+    /// The bounding radius, which the grid and the first test of a pair read.
     pub(super) radius: Vec<f32>,
+    /// The outline as a box swept by a disk (`shapes.rs`): the box's half extents (zero
+    /// for a disk) and the disk's radius.
+    pub(super) inner: Vec<Vector2D<f32>>,
+    pub(super) round: Vec<f32>,
+    /// The bounding box's half width and half height, which the grid reads (filled
+    /// from the radius where left empty).
+    pub(super) half: Vec<Vector2D<f32>>,
     /// 0 for a body that does not give way.
     pub(super) inverse_mass: Vec<f32>,
     pub(super) velocity: Vec<Vector2D<f32>>,
@@ -66,6 +75,9 @@ pub(super) struct BySlot {
 impl BySlot {
     pub(super) fn clear(&mut self) {
         self.radius.clear();
+        self.inner.clear();
+        self.round.clear();
+        self.half.clear();
         self.inverse_mass.clear();
         self.velocity.clear();
         self.motion.clear();
@@ -77,9 +89,16 @@ impl Collide {
     /// Puts the bodies (positions `points`, the rest in `self.by_slot`) in the grid's
     /// order: fills `order`, `local` and the local arrays.
     pub(super) fn take_in_grid_order(&mut self, points: &[Point2D<f32>]) {
+        let by_slot = &mut self.by_slot;
+        if by_slot.half.len() < by_slot.radius.len() {
+            let from = by_slot.half.len();
+            by_slot
+                .half
+                .extend(by_slot.radius[from..].iter().map(|&r| Vector2D::new(r, r)));
+        }
         let slots = self
             .grid
-            .sort(points, &self.by_slot.radius, &self.by_slot.motion);
+            .sort(points, &self.by_slot.half, &self.by_slot.motion);
         self.order.clear();
         self.order.extend(slots);
         self.local.clear();
@@ -87,6 +106,9 @@ impl Collide {
         let by_slot = &self.by_slot;
         self.points.clear();
         self.radius.clear();
+        self.inner.clear();
+        self.round.clear();
+        self.half.clear();
         self.inverse_mass.clear();
         self.velocity.clear();
         self.motion.clear();
@@ -96,6 +118,11 @@ impl Collide {
             self.local[s] = l as u32;
             self.points.push(points[s]);
             self.radius.push(by_slot.radius[s]);
+            self.half.push(by_slot.half[s]);
+            self.inner
+                .push(by_slot.inner.get(s).copied().unwrap_or_default());
+            self.round
+                .push(by_slot.round.get(s).copied().unwrap_or(by_slot.radius[s]));
             self.inverse_mass.push(by_slot.inverse_mass[s]);
             self.velocity
                 .push(by_slot.velocity.get(s).copied().unwrap_or_default());
@@ -105,6 +132,7 @@ impl Collide {
         }
         self.before.clear();
         self.before.extend_from_slice(&self.velocity);
+        self.boxes = self.inner.iter().any(|&i| i != Vector2D::zero());
     }
 
     /// The pairs that may touch, or come within `margin` of touching, each once,
@@ -115,17 +143,22 @@ impl Collide {
             pairs,
             points,
             radius,
+            half,
+            inner,
+            round,
+            boxes,
             inverse_mass,
             motion,
             order,
             extra,
             ..
         } = self;
+        let boxes = *boxes;
         pairs.clear();
         extra.clear();
         let slack = grid.usual_motion();
         let budget = PAIRS_PER_BODY * points.len() + PAIRS_AT_LEAST;
-        grid.pairs(points, radius, motion, |a, b, beyond| {
+        grid.pairs(points, half, motion, |a, b, beyond| {
             if pairs.len() + extra.len() >= budget {
                 // A crowd far denser than disks can be (thousands of nodes added at one
                 // point, contacts from a hot scatter's first frame): the pairs found so
@@ -133,9 +166,20 @@ impl Collide {
                 return false;
             }
             let (ia, ib) = (a as usize, b as usize);
-            let reach = radius[ia] + radius[ib];
             let d = points[ib] - points[ia];
             let relative = motion[ib] - motion[ia];
+            if boxes {
+                // Bounding boxes apart on an axis by more than the bodies move along it:
+                // they cannot touch this substep (most of a wide label's neighbours in
+                // the grid), found without a square root.
+                let reach = half[ia] + half[ib];
+                if d.x.abs() > reach.x + relative.x.abs() + margin
+                    || d.y.abs() > reach.y + relative.y.abs() + margin
+                {
+                    return true;
+                }
+            }
+            let reach = radius[ia] + radius[ib];
             let moved = relative.length();
             let near = reach + moved + margin;
             let distance_sq = d.square_length();
@@ -152,20 +196,9 @@ impl Collide {
                 return true;
             }
             let distance = distance_sq.sqrt();
-            let still = motion[ia] == Vector2D::zero() && motion[ib] == Vector2D::zero();
-            if inverse_mass[ia] == 0.0
-                && inverse_mass[ib] == 0.0
-                && still
-                && distance >= reach - SLEEPING_OVERLAP
-            {
-                // Neither gives way nor moves, and they do not overlap: nothing to part.
-                // (Two that fell asleep overlapping are woken and parted.)
-                return true;
-            }
-            let normal = if distance > 1e-6 {
-                d / distance
-            } else {
-                // A direction that depends only on the two slots.
+            // The direction two coincident bodies part along: one that depends only on
+            // their two slots.
+            let coincident = || {
                 let (sa, sb) = (order[ia], order[ib]);
                 if sa < sb {
                     coincident_normal(sa, sb)
@@ -173,11 +206,38 @@ impl Collide {
                     -coincident_normal(sb, sa)
                 }
             };
+            let outline = if boxes {
+                box_contact(inner, round, (ia, ib), d, coincident)
+            } else {
+                None
+            };
+            if outline.is_some_and(|(_, separation)| separation > moved + margin) {
+                // Bounding disks close, outlines further apart than they move.
+                return true;
+            }
+            let parted = match outline {
+                Some((_, separation)) => separation >= -SLEEPING_OVERLAP,
+                None => distance >= reach - SLEEPING_OVERLAP,
+            };
+            let still = motion[ia] == Vector2D::zero() && motion[ib] == Vector2D::zero();
+            if inverse_mass[ia] == 0.0 && inverse_mass[ib] == 0.0 && still && parted {
+                // Neither gives way nor moves, and they do not overlap: nothing to part.
+                // (Two that fell asleep overlapping are woken and parted.)
+                return true;
+            }
+            let (normal, separation) = outline.unwrap_or_else(|| {
+                let normal = if distance > 1e-6 {
+                    d / distance
+                } else {
+                    coincident()
+                };
+                (normal, distance - reach)
+            });
             let pair = Pair {
                 a,
                 b,
                 normal,
-                separation: distance - reach,
+                separation,
                 share_a: 0.0,
                 share_b: 0.0,
             };

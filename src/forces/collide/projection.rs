@@ -15,6 +15,7 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::Vector;
 
+use super::shapes::box_contact;
 use super::Collide;
 use crate::world::RapierSceneWorld;
 
@@ -42,9 +43,12 @@ impl Collide {
             let body = world.body_at(s);
             let t = body.translation();
             start.push(Point2D::new(t.x, t.y));
-            self.by_slot
-                .radius
-                .push(world.shape_at(s).bounding_radius());
+            let shape = world.shape_at(s);
+            let (inner, round) = shape.inner_and_round();
+            self.by_slot.radius.push(shape.bounding_radius());
+            self.by_slot.inner.push(inner);
+            self.by_slot.round.push(round);
+            self.by_slot.half.push(inner + Vector2D::new(round, round));
             self.by_slot.inverse_mass.push(if body.is_dynamic() {
                 1.0 / world.mass_at(s)
             } else {
@@ -83,17 +87,27 @@ impl Collide {
         for pair in &self.pairs {
             let (a, b) = (pair.a as usize, pair.b as usize);
             let d = self.points[b] - self.points[a];
-            let distance = d.length();
-            let overlap = self.radius[a] + self.radius[b] - distance;
+            let outline = if self.boxes {
+                box_contact(&self.inner, &self.round, (a, b), d, || pair.normal)
+            } else {
+                None
+            };
+            let (normal, overlap) = match outline {
+                Some((normal, separation)) => (normal, -separation),
+                None => {
+                    let distance = d.length();
+                    let normal = if distance > 1e-6 {
+                        d / distance
+                    } else {
+                        pair.normal
+                    };
+                    (normal, self.radius[a] + self.radius[b] - distance)
+                }
+            };
             if overlap <= 0.0 {
                 continue;
             }
             deepest = deepest.max(overlap);
-            let normal = if distance > 1e-6 {
-                d / distance
-            } else {
-                pair.normal
-            };
             self.points[a] -= normal * (overlap * pair.share_a);
             self.points[b] += normal * (overlap * pair.share_b);
         }

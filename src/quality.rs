@@ -135,10 +135,15 @@ pub fn overlapping_pairs<N: Clone + Eq + Hash>(
                 };
                 for &j in bucket.iter().filter(|&&j| j > i) {
                     let (inner_b, round_b) = shapes[j].inner_and_round();
-                    let d = scene.nodes[j].position - n.position;
-                    let (_, gap) = contact(d, inner_a + inner_b, round_a + round_b, || {
-                        Vector2D::new(1.0, 0.0)
-                    });
+                    let m = &scene.nodes[j];
+                    let gap = if inner_a == Vector2D::zero() && inner_b == Vector2D::zero() {
+                        // Two disks.
+                        (n.position - m.position).length() - round_a - round_b
+                    } else {
+                        let d = m.position - n.position;
+                        let tie = || Vector2D::new(1.0, 0.0);
+                        contact(d, inner_a + inner_b, round_a + round_b, tie).1
+                    };
                     if gap < -tolerance {
                         count += 1;
                     }

@@ -80,7 +80,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
 }
 
 /// The radius a node counts with when the hop length is fitted: a disk's own, and for a
-/// box that of the disk of the same area. A box's bounding circle (63 units across for a
+/// box that of the disk of the same area. A box's bounding circle (66 units across for a
 /// 63 × 20 label) would spread the picture for the corners' sake; the contacts part what
 /// the area-equal disks leave touching.
 fn seating_radius(shape: ColliderSpec) -> f32 {

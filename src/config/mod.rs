@@ -44,7 +44,8 @@ pub struct RapierLayoutConfig {
     /// Radius, in world units, of the disk of every node whose `radius` is `0.0`: the
     /// size contacts keep nodes apart at, and with the material's density its mass
     /// (`density × π r²`), so a larger default also makes nodes heavier and slower to
-    /// follow springs. Changing it between calls rebuilds the world: every body starts
+    /// follow springs. Label boxes ([`NodeShape::Rect`](crate::NodeShape::Rect)) weigh
+    /// what a disk of this radius weighs, whatever their size. Changing it between calls rebuilds the world: every body starts
     /// again at rest. Default: `16.0`.
     pub default_radius: f32,
     /// What each edge becomes: a spring, a rope, a rod or nothing ([`EdgeJoint`]).

@@ -23,7 +23,7 @@ use crate::world::bindings::ColliderSpec;
 /// - **Mass.** A box weighs what a node of the layout's
 ///   [`default_radius`](crate::RapierLayoutConfig::default_radius) weighs, whatever its
 ///   size, so a long label throws, springs and settles like a short one. A disk weighs
-///   `density × π r²`, as it always has.
+///   `density × π r²`.
 /// - **Radius.** A box ignores [`radius`](crate::CanvasNode::radius) (it must still be
 ///   finite and non-negative); its corners are set by `corner_radius`.
 /// - **Edges.** An edge's rest length runs centre to centre, as for disks; the contacts
@@ -73,8 +73,8 @@ impl NodeShape {
 
     /// The collider the layout gives a node of this shape: the disk of `radius` (the
     /// node's radius with the default already put in for 0), or the box, rounded where
-    /// its corners are, with finite, non-negative extents (unusable values count as 0,
-    /// a corner radius as at most half the shorter side).
+    /// its corners are, with finite extents from 0 to [`MAX_COORDINATE`] (unusable
+    /// values count as 0, a corner radius as at most half the shorter side).
     ///
     /// # Example
     /// ```
@@ -91,7 +91,7 @@ impl NodeShape {
                 height,
                 corner_radius,
             } => {
-                let half = |v: f32| (0.5 * finite_or(v, 0.0)).max(0.0);
+                let half = |v: f32| (0.5 * finite_or(v, 0.0)).clamp(0.0, MAX_COORDINATE);
                 let half_extents = Vector2D::new(half(width), half(height));
                 let corner_radius =
                     finite_or(corner_radius, 0.0).clamp(0.0, half_extents.x.min(half_extents.y));

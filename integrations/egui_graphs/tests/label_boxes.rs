@@ -1,5 +1,5 @@
 //! Wide labels in a real `GraphView`: karate's members drawn as [`LabelBox`]es ("member
-//! 12", about 80 × 20 units), laid out from the origin to rest by the layout reading each
+//! 12", 64 to 71 × 20 units), laid out from the origin to rest by the layout reading each
 //! box from its display: no two boxes overlap.
 
 use egui::{Context, Pos2, RawInput, Rect};

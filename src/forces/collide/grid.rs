@@ -49,9 +49,9 @@ impl Grid {
         half: &[Vector2D<f32>],
         motion: &[Vector2D<f32>],
     ) -> impl ExactSizeIterator<Item = u32> + '_ {
-        self.largest = half
-            .iter()
-            .fold(Vector2D::zero(), |l: Vector2D<f32>, &h| l.max(h));
+        self.largest = half.iter().fold(Vector2D::zero(), |l: Vector2D<f32>, &h| {
+            Vector2D::new(l.x.max(h.x), l.y.max(h.y))
+        });
         self.lengths.clear();
         self.lengths.extend(motion.iter().map(|m| m.length()));
         let usual = if self.lengths.is_empty() {
@@ -145,8 +145,8 @@ impl Grid {
             }
             let (from, to) = (p, p + m);
             let (lo, hi) = (from.min(to), from.max(to));
-            // Padded by the radius and half the usual motion: two fast bodies whose
-            // paths come within their radii and the usual motion overlap.
+            // Padded by the half extents and half the usual motion: two fast bodies whose
+            // paths come within their extents and the usual motion overlap.
             let r = half[a] + Vector2D::new(0.5 * usual, 0.5 * usual);
             self.swept
                 .push((lo.x - r.x, hi.x + r.x, lo.y - r.y, hi.y + r.y, a as u32));

@@ -457,6 +457,55 @@ mod tests {
         }
     }
 
+    /// Label boxes of many widths and heights, still: every two whose outlines touch or
+    /// overlap are found (the grid's cells are as wide as the widest box and as high as
+    /// the highest, and the test of a pair drops only bounding boxes apart on an axis).
+    #[test]
+    fn finds_every_pair_of_boxes_that_touch() {
+        for seed in 1..=4 {
+            let mut next = sequence(seed);
+            let mut collide = Collide::default();
+            let mut points = Vec::new();
+            for _ in 0..500 {
+                points.push(Point2D::new(next() * 600.0, next() * 300.0));
+                let half = Vector2D::new(5.0 + next() * 35.0, 3.0 + next() * 9.0);
+                collide.by_slot.radius.push(half.length());
+                collide.by_slot.half.push(half);
+                collide.by_slot.inner.push(half);
+                collide.by_slot.round.push(0.0);
+                collide.by_slot.inverse_mass.push(1.0);
+                collide.by_slot.velocity.push(Vector2D::zero());
+                collide.by_slot.motion.push(Vector2D::zero());
+                collide.by_slot.sleeping.push(false);
+            }
+            collide.take_in_grid_order(&points);
+            collide.find_pairs(0.0);
+            let found: Vec<(u32, u32)> = collide.pairs.iter().map(|p| (p.a, p.b)).collect();
+            let (p, inner) = (&collide.points, &collide.inner);
+            let mut missing = Vec::new();
+            let mut touching = 0;
+            for a in 0..p.len() {
+                for b in a + 1..p.len() {
+                    let d = p[b] - p[a];
+                    let (_, separation) =
+                        super::super::shapes::contact(d, inner[a] + inner[b], 0.0, Vector2D::zero);
+                    if separation <= 0.0 {
+                        touching += 1;
+                        if found.binary_search(&(a as u32, b as u32)).is_err() {
+                            missing.push((a, b, separation));
+                        }
+                    }
+                }
+            }
+            assert!(
+                missing.is_empty() && touching > 0,
+                "seed {seed}: {} of {touching} touching boxes missed, first {:?}",
+                missing.len(),
+                missing.first()
+            );
+        }
+    }
+
     /// A crowd far denser than disks can be (every body within a unit of one point, as
     /// when thousands of nodes are added at one point): every two bodies touch, and the
     /// search keeps to its budget, the pairs found first, in order and each once,

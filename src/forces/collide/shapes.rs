@@ -6,8 +6,8 @@
 //! [`contact`] measures: axis-aligned, since rotation is locked, and a few operations a
 //! pair, like two disks.
 //!
-//! Disks with disks keep the separation's own arithmetic (`pairs.rs`), bit for bit; this
-//! file is for the pairs with a box in them.
+//! A pair of two disks takes the separation's own arithmetic (`pairs.rs`); this file is
+//! for the pairs with a box in them.
 
 use euclid::default::Vector2D;
 
@@ -23,7 +23,12 @@ pub(crate) fn contact(
     round: f32,
     tie: impl FnOnce() -> Vector2D<f32>,
 ) -> (Vector2D<f32>, f32) {
-    let nearest = Vector2D::new(d.x.clamp(-inner.x, inner.x), d.y.clamp(-inner.y, inner.y));
+    // `max` then `min`, not `clamp`, which panics on a bound that is NaN or below the
+    // other (a shape from a snapshot is not checked for them).
+    let nearest = Vector2D::new(
+        d.x.max(-inner.x).min(inner.x),
+        d.y.max(-inner.y).min(inner.y),
+    );
     let out = d - nearest;
     let length = out.length();
     if length > 1e-6 {

@@ -86,6 +86,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                     }
                     (_, world) => {
                         self.heat.alpha = cooling.reheated(self.heat.alpha);
+                        self.forces.forget_rest();
                         // All of it: springs applied as forces and the layout's own
                         // disk separation link no rapier island that would wake it.
                         if let Some(world) = world {
@@ -138,6 +139,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.heat.cold_time = 0.0;
         }
         self.heat.halted = false;
+        self.forces.forget_rest();
         self.rest.converged = false;
         self.rest.calm_time = 0.0;
         if let Some(world) = self.world.as_mut() {

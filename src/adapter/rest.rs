@@ -86,6 +86,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                     super::node_forces::hold_locked_axes(world, &self.forces.targets.locks);
                 }
                 world.halt_dynamic_bodies();
+                let dt = world.integration_parameters().dt;
+                self.forces
+                    .capture_rest(world, &self.config, heat.alpha, dt);
                 // Asleep, so that a later local disturbance wakes only what it reaches.
                 world.sleep_dynamic_bodies_now();
                 heat.halted = true;

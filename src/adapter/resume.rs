@@ -249,6 +249,10 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         // steps bodies put to sleep before their first step.
         self.heat.halted = true;
         world.set_contacts_enabled(true);
+        // The picture is the rest's balance (`forces/rest_bias.rs`).
+        let dt = world.integration_parameters().dt;
+        self.forces
+            .capture_rest(world, &self.config, self.heat.alpha, dt);
         world.sleep_dynamic_bodies_now();
         self.rest = Rest {
             calm_time: REST_TIME,

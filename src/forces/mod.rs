@@ -39,6 +39,7 @@ mod group;
 pub(crate) mod many_body;
 mod position;
 mod radial;
+mod rest_bias;
 mod springs;
 pub(crate) mod stress;
 pub(crate) mod targets;
@@ -196,6 +197,8 @@ pub(crate) struct Forces<N> {
     /// Whether the last substep set forces on bodies: rapier keeps a body's force until
     /// it is reset, so when no force is active any more they are cleared once.
     applied: bool,
+    /// A stress layout's springs at its last cold stop (`rest_bias.rs`).
+    rest_bias: rest_bias::RestBias,
 }
 
 impl<N: Clone + Eq + Hash> Default for Forces<N> {
@@ -218,6 +221,7 @@ impl<N: Clone + Eq + Hash> Default for Forces<N> {
             stress: stress::StressForce::default(),
             targets: NodeTargets::default(),
             applied: false,
+            rest_bias: rest_bias::RestBias::default(),
         }
     }
 }
@@ -243,6 +247,9 @@ pub(crate) struct SavedForces {
     /// The stress model and its pivot terms' held sums (empty without one).
     #[serde(default)]
     stress: stress::StressForce,
+    /// The springs' pull at the last cold stop (empty without one).
+    #[serde(default)]
+    rest_bias: rest_bias::RestBias,
 }
 
 impl<N: Clone + Eq + Hash> Forces<N> {
@@ -255,6 +262,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             contacts,
             contacts_version,
             stress: self.stress.clone(),
+            rest_bias: self.rest_bias.clone(),
         }
     }
 
@@ -264,6 +272,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             targets: saved.targets,
             applied: saved.applied,
             stress: saved.stress,
+            rest_bias: saved.rest_bias,
             ..Self::default()
         };
         forces
@@ -351,8 +360,11 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             }
         }
         if BodyForce::<N>::is_active(&self.stress, config, &self.targets) {
+            self.stress.hold_cold = self.rest_bias.holds(world, n);
             self.stress.apply(&frame, &mut self.sums);
         }
+        self.rest_bias
+            .take_from(world, &self.bodies.pushed, &mut self.sums.springs);
         for (s, f) in self.sums.forces.iter_mut().enumerate() {
             if !self.bodies.pushed[s] {
                 continue;
@@ -412,6 +424,61 @@ impl<N: Clone + Eq + Hash> Forces<N> {
                 }
             }
         }
+    }
+
+    /// At a stress layout's cold stop: what every dynamic body's springs (edges and
+    /// stress terms) pull with where it rests, kept so that from here on the rest is
+    /// their balance (`rest_bias.rs`). Forgets it for other layouts.
+    pub(crate) fn capture_rest(
+        &mut self,
+        world: &RapierSceneWorld<N>,
+        config: &RapierLayoutConfig,
+        heat: f32,
+        dt: f32,
+    ) {
+        self.rest_bias = rest_bias::RestBias::default();
+        if config.stress.is_none() {
+            return;
+        }
+        let n = world.slot_count();
+        self.bodies.gather(world);
+        for (s, pushed) in self.bodies.pushed.iter_mut().enumerate() {
+            *pushed = world.body_at(s).is_dynamic();
+        }
+        for sums in [&mut self.sums.forces, &mut self.sums.springs] {
+            sums.clear();
+            sums.resize(n, Vector2D::zero());
+        }
+        self.sums.resistance.clear();
+        self.sums.resistance.resize(n, 0.0);
+        self.sums.pulls.clear();
+        self.sums.pulls.resize(n, [0.0; 3]);
+        let frame = ForceContext {
+            world,
+            config,
+            points: &self.bodies.points,
+            velocities: &self.bodies.velocities,
+            pushed: &self.bodies.pushed,
+            heat,
+            dt,
+            targets: &self.targets,
+        };
+        for force in &mut self.list {
+            if force.is_active(config, &self.targets) {
+                force.apply(&frame, &mut self.sums);
+            }
+        }
+        if BodyForce::<N>::is_active(&self.stress, config, &self.targets) {
+            self.stress.renew_pivot_terms();
+            self.stress.hold_cold = false;
+            self.stress.apply(&frame, &mut self.sums);
+        }
+        self.rest_bias = rest_bias::RestBias::capture(world, &self.sums.springs);
+    }
+
+    /// Forgets the rest's balance: the whole layout is laid out again.
+    pub(crate) fn forget_rest(&mut self) {
+        self.rest_bias = rest_bias::RestBias::default();
     }
 
     /// Before the world halts: projects the overlaps the disk separation still holds

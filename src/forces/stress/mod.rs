@@ -53,6 +53,12 @@ pub(crate) struct StressForce {
     hops: Vec<f32>,
     #[serde(skip)]
     weights: Vec<f32>,
+    /// Set for each substep by the forces: the layout rested and keeps its rest's
+    /// balance (`rest_bias.rs`), so the pivot terms are held for every node the
+    /// disturbance did not heat (worked out afresh only for the heated ones), and a node
+    /// that wakes finds the terms it rested with.
+    #[serde(skip)]
+    pub(crate) hold_cold: bool,
 }
 
 impl StressForce {
@@ -70,6 +76,14 @@ impl StressForce {
         self.model = model;
         self.pivot_force.clear();
         self.since = 0;
+    }
+
+    /// Works the pivot terms out afresh for every node on the next
+    /// [`apply`](BodyForce::apply), instead of holding them: what a rest's balance is
+    /// measured with, so that no node holds a pull worked out where the pivots were long
+    /// ago.
+    pub(crate) fn renew_pivot_terms(&mut self) {
+        self.pivot_force.clear();
     }
 
     /// The model up to date with `world` for these settings: kept while the graph is
@@ -188,8 +202,10 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for StressForce {
         }
         let dt2 = frame.dt * frame.dt;
         let period = stress.pivot_period.max(1);
-        let fresh = self.pivot_force.len() != n || self.since % period == 0;
-        if fresh {
+        let renew = self.pivot_force.len() != n;
+        let fresh = renew || self.since % period == 0;
+        let hold_cold = self.hold_cold && !renew;
+        if fresh && !hold_cold {
             self.pivot_force.clear();
             self.pivot_force.resize(n, Vector2D::zero());
             self.pivot_stiffness.clear();
@@ -230,7 +246,7 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for StressForce {
                 f += pull(p, frame.points[j as usize], hop * d, k * w);
                 stiffness += k * w;
             }
-            if fresh {
+            if fresh && (!hold_cold || frame.world.host_at(i).heat > 0.0) {
                 let c = model.component[i] as usize;
                 let (a, b) = model.pivot_range[c];
                 let width = padded((b - a) as usize);

@@ -69,6 +69,11 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for SpringForce {
             let (Some(&pa), Some(&pb)) = (frame.points.get(a), frame.points.get(b)) else {
                 continue;
             };
+            if !(frame.pushed[a] || frame.pushed[b]) {
+                // Neither end moves this substep (asleep, held or fixed), and only the
+                // pushed bodies' sums are read: a resting graph's springs cost a check.
+                continue;
+            }
             let d = pb - pa;
             let length = d.length();
             if !(length > 1e-3 && length.is_finite()) {

@@ -42,12 +42,14 @@ impl Grid {
     /// neighbouring cells. Larger cells would hold more bodies, and every two bodies of
     /// neighbouring cells are tested: label boxes, wide and low, get wide and low cells.
     /// `half` is each body's bounding box's half width and half height (a disk's radius
-    /// twice).
+    /// twice). Only the bodies `keep` marks are sorted in (all of them when it is
+    /// empty); the cells are sized from all.
     pub(super) fn sort(
         &mut self,
         points: &[Point2D<f32>],
         half: &[Vector2D<f32>],
         motion: &[Vector2D<f32>],
+        keep: &[bool],
     ) -> impl ExactSizeIterator<Item = u32> + '_ {
         self.largest = half.iter().fold(Vector2D::zero(), |l: Vector2D<f32>, &h| {
             Vector2D::new(l.x.max(h.x), l.y.max(h.y))
@@ -69,7 +71,7 @@ impl Grid {
             points
                 .iter()
                 .enumerate()
-                .filter(|(_, p)| p.is_finite())
+                .filter(|&(s, p)| p.is_finite() && keep.get(s).is_none_or(|&k| k))
                 .map(|(s, &p)| (key(index(p.x, cell.x), index(p.y, cell.y)), s as u32)),
         );
         self.cells.sort_unstable();

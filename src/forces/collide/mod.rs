@@ -35,6 +35,7 @@ use crate::world::RapierSceneWorld;
 mod grid;
 mod pairs;
 mod projection;
+mod region;
 pub(crate) mod shapes;
 
 use grid::Grid;
@@ -134,6 +135,9 @@ pub(crate) struct Collide {
     round: Vec<f32>,
     /// Whether any body is a box (else every pair is measured as two disks).
     boxes: bool,
+    /// By slot, the bodies this substep's separation takes (`region.rs`); empty for
+    /// every body.
+    region: Vec<bool>,
     inverse_mass: Vec<f32>,
     /// Each body's velocity during the solve, and what it was before.
     velocity: Vec<Vector2D<f32>>,
@@ -166,6 +170,7 @@ impl Collide {
         dt: f32,
     ) -> bool {
         self.prepare(world, bodies, dt);
+        self.mark_region(&bodies.points);
         self.take_in_grid_order(&bodies.points);
         self.find_pairs(0.0);
         if self.pairs.is_empty() {

@@ -96,9 +96,12 @@ impl Collide {
                 .half
                 .extend(by_slot.radius[from..].iter().map(|&r| Vector2D::new(r, r)));
         }
-        let slots = self
-            .grid
-            .sort(points, &self.by_slot.half, &self.by_slot.motion);
+        let slots = self.grid.sort(
+            points,
+            &self.by_slot.half,
+            &self.by_slot.motion,
+            &self.region,
+        );
         self.order.clear();
         self.order.extend(slots);
         self.local.clear();

@@ -57,6 +57,8 @@ impl Collide {
             // Widens the grid's cells by the margin.
             self.by_slot.motion.push(Vector2D::new(MARGIN, 0.0));
         }
+        // Every body: a cold stop parts what any pair still holds.
+        self.region.clear();
         self.take_in_grid_order(&start);
         self.find_pairs(MARGIN);
         self.share();

@@ -219,3 +219,39 @@ fn an_empty_worker_rests_and_lays_out_what_it_is_sent() {
     rest(&mut worker);
     assert!(worker.frame().positions.is_empty(), "every node removed");
 }
+
+/// A node reshaped through the worker into a wide box pushes the node it now covers off
+/// its outline.
+#[test]
+fn a_reshape_through_the_worker_reaches_the_layout() {
+    let scene = CanvasSceneInput::new(
+        vec![
+            CanvasNode::new(0_u32, Point2D::new(0.0, 0.0)),
+            CanvasNode::new(1, Point2D::new(60.0, 0.0)),
+        ],
+        vec![],
+    );
+    let config = RapierLayoutConfig {
+        repulsion: None,
+        ..RapierLayoutConfig::force_directed()
+    };
+    let mut worker = LayoutWorker::spawn(scene, config);
+    rest(&mut worker);
+    let before = (at(&worker, 1) - at(&worker, 0)).length();
+    // 200 × 20: its side reaches 100 units out, the disk's centre must be 116 out.
+    worker.reshape(
+        0,
+        0.0,
+        graph_canvas_layout::NodeShape::Rect {
+            width: 200.0,
+            height: 20.0,
+            corner_radius: 0.0,
+        },
+    );
+    rest(&mut worker);
+    let d = at(&worker, 1) - at(&worker, 0);
+    assert!(
+        d.x.abs() > 114.0 || d.y.abs() > 25.0,
+        "the disk {before} units away, covered by the box, is now at {d:?} from its centre"
+    );
+}

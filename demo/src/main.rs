@@ -7,17 +7,22 @@
 //!   force-directed configuration, draws the nodes as label boxes ("node <id>") or
 //!   disks, and shows frame time, step time and convergence.
 //!
-//! `cargo run --release -p graph-canvas-layout-demo [scene.json] [--boxes] [--frames N]`
-//! (`--boxes` starts with labels as boxes; `--frames N` quits after N frames, for
-//! unattended checks).
+//! `cargo run --release -p graph-canvas-layout-demo [scene.json] [--boxes] [--worker]
+//! [--frames N]` (`--boxes` starts with labels as boxes; `--worker` steps the layout on
+//! a thread of its own, as graphs of 5,000 nodes or more always are; `--frames N` quits
+//! after N frames, for unattended checks).
+
+mod engine;
 
 use std::time::Instant;
+
+use engine::{Engine, WORKER_FROM};
 
 use eframe::egui;
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::{
-    Accuracy, CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, EdgeJoint, Layout,
-    LayoutExtras, NodeShape, RapierLayout, RapierLayoutConfig, RapierLayoutState, SceneFile,
+    Accuracy, CanvasEdge, CanvasNode, CanvasSceneInput, EdgeJoint, LayoutExtras, NodeShape,
+    RapierLayoutConfig, SceneFile,
 };
 
 /// A label box's width per character and height, in world units.
@@ -26,8 +31,7 @@ const BOX_HEIGHT: f32 = 20.0;
 
 struct Demo {
     scene: CanvasSceneInput<u32>,
-    layout: RapierLayout<u32>,
-    state: RapierLayoutState,
+    engine: Engine,
     extras: LayoutExtras<u32>,
     selected: Option<u32>,
     grabbed: Option<u32>,
@@ -40,16 +44,18 @@ struct Demo {
     preset: Preset,
     /// Whether nodes are label boxes ("node <id>") rather than disks.
     boxes: bool,
+    /// Frames drawn.
+    frames: u64,
     frames_left: Option<u64>,
 }
 
 impl Demo {
-    fn new(scene: CanvasSceneInput<u32>, frames_left: Option<u64>) -> Self {
+    fn new(scene: CanvasSceneInput<u32>, frames_left: Option<u64>, worker: bool) -> Self {
         let next_id = scene.nodes.iter().map(|n| n.id).max().map_or(0, |m| m + 1);
+        let worker = worker || scene.nodes.len() >= WORKER_FROM;
         Self {
+            engine: Engine::new(&scene, RapierLayoutConfig::stress(), worker),
             scene,
-            layout: RapierLayout::new(RapierLayoutConfig::stress()),
-            state: RapierLayoutState::default(),
             extras: LayoutExtras::default(),
             selected: None,
             grabbed: None,
@@ -61,6 +67,7 @@ impl Demo {
             pan: egui::Vec2::ZERO,
             preset: Preset::Stress,
             boxes: false,
+            frames: 0,
             frames_left,
         }
     }
@@ -92,9 +99,11 @@ impl Demo {
             .map(|n| n.id)
     }
 
-    /// Every node a label box of "node <id>" (with [`boxes`](Self::boxes)) or a disk.
+    /// Every node a label box of "node <id>" (with [`boxes`](Self::boxes)) or a disk;
+    /// the nodes whose shape changed are sent to the worker.
     fn apply_shapes(&mut self) {
         for n in &mut self.scene.nodes {
+            let before = n.shape;
             *n = if self.boxes {
                 let label = format!("node {}", n.id);
                 let width = CHAR_WIDTH * label.len() as f32 + 8.0;
@@ -102,6 +111,9 @@ impl Demo {
             } else {
                 n.clone().with_disk()
             };
+            if n.shape != before {
+                self.engine.reshape(n);
+            }
         }
     }
 
@@ -112,6 +124,9 @@ impl Demo {
             .retain(|e| !((e.source == a && e.target == b) || (e.source == b && e.target == a)));
         if self.scene.edges.len() == before {
             self.scene.edges.push(CanvasEdge::new(a, b));
+            self.engine.add_edge(a, b);
+        } else {
+            self.engine.remove_edge(a, b);
         }
     }
 
@@ -126,17 +141,17 @@ impl Demo {
             self.scene.nodes.len(),
             self.scene.edges.len()
         ));
-        let converged = self.layout.is_converged(&self.state);
+        let converged = self.engine.is_converged();
         ui.label(if converged {
             "converged: at rest"
         } else {
             "converged: moving"
         });
-        ui.label(format!(
-            "rebuilds {}, patches {}",
-            self.layout.rebuild_count(),
-            self.layout.patch_count()
-        ));
+        ui.label(match self.engine.counts() {
+            Some((rebuilds, patches)) => format!("rebuilds {rebuilds}, patches {patches}"),
+            None => "on a thread of its own (LayoutWorker)".to_string(),
+        });
+        let mut config = self.engine.config().clone();
         ui.separator();
         ui.label("layout preset");
         let before = self.preset;
@@ -145,18 +160,21 @@ impl Demo {
         }
         if self.preset != before {
             // The preset's accuracy comes with it; the chosen joint stays.
-            let keep = self.layout.config.edge_joint;
-            self.layout.config = self.preset.config();
-            self.layout.config.edge_joint = keep;
+            let keep = config.edge_joint;
+            config = self.preset.config();
+            config.edge_joint = keep;
         }
         ui.label("accuracy");
         let preset_accuracy = self.preset.config().accuracy;
-        for (name, accuracy) in accuracy_choices(self.layout.config.accuracy, preset_accuracy) {
-            ui.radio_value(&mut self.layout.config.accuracy, accuracy, name);
+        for (name, accuracy) in accuracy_choices(config.accuracy, preset_accuracy) {
+            ui.radio_value(&mut config.accuracy, accuracy, name);
         }
         ui.label("edge joint");
-        for (name, joint) in joint_choices(self.layout.config.edge_joint) {
-            ui.radio_value(&mut self.layout.config.edge_joint, joint, name);
+        for (name, joint) in joint_choices(config.edge_joint) {
+            ui.radio_value(&mut config.edge_joint, joint, name);
+        }
+        if config != *self.engine.config() {
+            self.engine.set_config(config);
         }
         ui.separator();
         if ui.checkbox(&mut self.boxes, "labels as boxes").changed() {
@@ -175,11 +193,15 @@ impl Demo {
             self.scene
                 .nodes
                 .push(CanvasNode::new(id, at).with_radius(16.0));
+            self.apply_shapes();
+            if let Some(node) = self.scene.nodes.last() {
+                self.engine.add_node(node);
+            }
             if let Some(s) = self.selected {
                 self.scene.edges.push(CanvasEdge::new(s, id));
+                self.engine.add_edge(s, id);
             }
             self.selected = Some(id);
-            self.apply_shapes();
         }
         if ui
             .add_enabled(
@@ -192,6 +214,7 @@ impl Demo {
                 self.scene.nodes.retain(|n| n.id != s);
                 self.scene.edges.retain(|e| e.source != s && e.target != s);
                 self.extras.pinned.remove(&s);
+                self.engine.remove_node(s);
             }
         }
         ui.separator();
@@ -305,16 +328,10 @@ impl eframe::App for Demo {
         let dt = (now - self.last_frame).as_secs_f32();
         self.last_frame = now;
         self.frame_ms = self.frame_ms * 0.9 + dt * 1e3 * 0.1;
-        let started = Instant::now();
-        let deltas = self.layout.step(
-            &self.scene,
-            &mut self.state,
-            dt,
-            &CanvasViewport::default(),
-            &self.extras,
-        );
-        self.step_us = self.step_us * 0.9 + started.elapsed().as_secs_f32() * 1e6 * 0.1;
-        self.scene.apply_deltas(&deltas);
+        if let Some(step_us) = self.engine.frame(&mut self.scene, &self.extras, dt) {
+            self.step_us = self.step_us * 0.9 + step_us * 0.1;
+        }
+        self.frames += 1;
         egui::Panel::left("controls").show(ui, |ui| self.side_panel(ui));
         egui::CentralPanel::default()
             .frame(egui::Frame::NONE)
@@ -323,10 +340,11 @@ impl eframe::App for Demo {
             *left = left.saturating_sub(1);
             if *left == 0 {
                 println!(
-                    "frames done: {} calls, step {:.0} µs, converged {}",
-                    self.state.step_count,
+                    "frames done: {} frames, step {:.0} µs, converged {}, on the worker {}",
+                    self.frames,
                     self.step_us,
-                    self.layout.is_converged(&self.state)
+                    self.engine.is_converged(),
+                    self.engine.on_worker()
                 );
                 ctx.send_viewport_cmd(egui::ViewportCommand::Close);
             }
@@ -441,6 +459,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .and_then(|i| args.get(i + 1))
         .and_then(|n| n.parse().ok());
     let boxes = args.iter().any(|a| a == "--boxes");
+    let worker = args.iter().any(|a| a == "--worker");
     let path = args
         .iter()
         .find(|a| a.ends_with(".json"))
@@ -462,7 +481,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "graph-canvas-layout demo",
         options,
         Box::new(move |_cc| {
-            let mut demo = Demo::new(scene, frames_left);
+            let mut demo = Demo::new(scene, frames_left, worker);
             demo.boxes = boxes;
             demo.apply_shapes();
             Ok(Box::new(demo))
@@ -506,7 +525,7 @@ mod tests {
             ],
             vec![CanvasEdge::new(7, 1234)],
         );
-        let mut demo = Demo::new(scene, None);
+        let mut demo = Demo::new(scene, None, false);
         demo.boxes = true;
         demo.apply_shapes();
         let widths: Vec<_> = demo.scene.nodes.iter().map(|n| n.shape).collect();

@@ -17,6 +17,7 @@ use self::thread::{Command, Slot, Worker};
 use crate::config::RapierLayoutConfig;
 use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput};
+use crate::input::shape::NodeShape;
 use crate::layout::{LayoutExtras, NodeMap};
 #[cfg(doc)]
 use crate::RapierLayout;
@@ -230,6 +231,12 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
     /// Adds an edge.
     pub fn add_edge(&mut self, edge: CanvasEdge<N>) {
         self.send(Command::AddEdge(edge));
+    }
+
+    /// Gives node `id` a new radius and shape ([`NodeShape`]): a label edited, a box
+    /// toggled. The body is reshaped in place; the node keeps its motion.
+    pub fn reshape(&mut self, id: N, radius: f32, shape: NodeShape) {
+        self.send(Command::Reshape(id, radius, shape));
     }
 
     /// Removes every edge between `a` and `b`, either way round.

@@ -16,6 +16,7 @@ use crate::adapter::{RapierLayout, RapierLayoutState};
 use crate::config::RapierLayoutConfig;
 use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
+use crate::input::shape::NodeShape;
 use crate::layout::{Layout, LayoutExtras, NodeMap};
 
 /// One host message. The worker applies them in the order they were sent.
@@ -30,6 +31,7 @@ pub(super) enum Command<N> {
     Pin(N, bool),
     Forces(N, Option<NodeForces>),
     Configure(Box<RapierLayoutConfig>),
+    Reshape(N, f32, NodeShape),
 }
 
 /// The newest frame, waiting for the host to take it.
@@ -187,6 +189,14 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
                 self.extras.forces.remove(&id);
             }
             Command::Configure(config) => self.layout.config = *config,
+            Command::Reshape(id, radius, shape) => {
+                self.reindex();
+                if let Some(&i) = self.index.get(&id) {
+                    let node = &mut self.scene.nodes[i];
+                    node.radius = radius;
+                    node.shape = shape;
+                }
+            }
         }
     }
 

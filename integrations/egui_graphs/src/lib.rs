@@ -35,6 +35,15 @@
 //! `epsilon` of `f32::MIN_POSITIVE` runs it until the layout rests (a larger one may stop
 //! in the cooling's tail, where nodes still creep).
 //!
+//! # Large graphs
+//! A graph of [`WORKER_FROM`] nodes or more when the layout first sees it is laid out
+//! on a [`LayoutWorker`](graph_canvas_layout::LayoutWorker), on a thread of its own:
+//! each frame sends what changed in the graph (nodes and edges added or removed, shapes,
+//! drags, pins, the configuration, nodes the app moved) and takes the newest positions,
+//! so egui's frame never waits for a step. The worker follows real time, so
+//! [`GraphView::fast_forward_until_stable`](egui_graphs::GraphView::fast_forward_until_stable)
+//! does not run such a layout ahead.
+//!
 //! # Node sizes and label boxes
 //! Each node is laid out with the outline its display draws, read from
 //! [`DisplayNode::closest_boundary_point`]: probed along the axes it gives a width and a
@@ -50,8 +59,10 @@
 
 mod label_box;
 mod outline;
+mod worker;
 
 pub use label_box::{label_size, LabelBox, BOX_HEIGHT, CHAR_WIDTH};
+pub use worker::WORKER_FROM;
 
 use std::collections::BTreeSet;
 use std::sync::{Arc, Mutex, PoisonError};
@@ -72,6 +83,8 @@ struct World {
     state: RapierLayoutState,
     scene: CanvasSceneInput<usize>,
     extras: LayoutExtras<usize>,
+    /// For graphs of [`WORKER_FROM`] nodes or more: the layout on a thread of its own.
+    synced: Option<worker::Synced>,
 }
 
 /// A handle to the world: clones share it; serde skips it.
@@ -163,7 +176,10 @@ impl RapierGraphState {
         let mut world = self.world.0.lock().unwrap_or_else(PoisonError::into_inner);
         world
             .as_mut()
-            .is_some_and(|world| world.layout.forget_node(&index))
+            .is_some_and(|world| match world.synced.as_mut() {
+                Some(synced) => synced.forget(index),
+                None => world.layout.forget_node(&index),
+            })
     }
 
     /// Runs `f` on the layout, once it exists (after the first frame), for what the
@@ -207,6 +223,7 @@ impl Layout<RapierGraphState> for RapierGraphLayout {
             state: RapierLayoutState::default(),
             scene: CanvasSceneInput::default(),
             extras: LayoutExtras::default(),
+            synced: None,
         });
         if world.layout.config != state.config {
             world.layout.config = state.config.clone();
@@ -214,6 +231,39 @@ impl Layout<RapierGraphState> for RapierGraphLayout {
         read_graph(g, &mut world.scene, &mut world.extras);
         world.extras.pinned.clear();
         world.extras.pinned.extend(state.pinned.iter().copied());
+        if world.synced.is_none()
+            && !world.layout.has_world()
+            && world.scene.nodes.len() >= WORKER_FROM
+        {
+            world.synced = Some(worker::Synced::spawn(
+                &world.scene,
+                &world.extras,
+                state.config.clone(),
+            ));
+        }
+        if let Some(synced) = world.synced.as_mut() {
+            synced.send(&world.scene, &world.extras, &state.config);
+            let (positions, converged) = synced.receive();
+            let mut moved = 0.0_f32;
+            for (index, p) in positions {
+                if world.extras.dragging.contains(&index) {
+                    continue;
+                }
+                if let Some(node) = g.g_mut().node_weight_mut(NodeIndex::new(index)) {
+                    let at = egui::pos2(p.x, p.y);
+                    moved += (at - node.location()).length();
+                    node.set_location(at);
+                    synced.told(index, at);
+                }
+            }
+            state.converged = converged;
+            state.last_avg_displacement = Some(moved / g.node_count() as f32);
+            state.step_count += 1;
+            if !converged {
+                ui.ctx().request_repaint();
+            }
+            return;
+        }
         let deltas = world.layout.step(
             &world.scene,
             &mut world.state,

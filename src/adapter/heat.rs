@@ -70,6 +70,10 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         }
         if disturbed {
             self.heat.halted = false;
+            if self.disturbances.everything() {
+                // Laid out again as a whole: toward the stress minimum, not the rest.
+                self.forces.forget_rest();
+            }
         }
         if self.heat.halted {
             return false;

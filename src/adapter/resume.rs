@@ -249,15 +249,19 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         // steps bodies put to sleep before their first step.
         self.heat.halted = true;
         world.set_contacts_enabled(true);
-        // The picture is the rest's balance (`forces/rest_bias.rs`).
-        let dt = world.integration_parameters().dt;
-        self.forces
-            .capture_rest(world, &self.config, self.heat.alpha, dt);
         world.sleep_dynamic_bodies_now();
         self.rest = Rest {
             calm_time: REST_TIME,
             converged: true,
         };
+        // The picture is the rest's balance (`forces/rest_bias.rs`), measured with the
+        // springs at the floor's scale, as the first step will have them.
+        self.heat_world();
+        if let Some(world) = self.world.as_mut() {
+            let dt = world.integration_parameters().dt;
+            self.forces
+                .capture_rest(world, &self.config, self.heat.alpha, dt);
+        }
         self.disturbances.clear();
         for drive in &self.drives {
             self.disturbances.touch(drive.slot as usize, false);

@@ -315,6 +315,8 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             force.reset();
         }
         BodyForce::<N>::reset(&mut self.stress);
+        // A new world counts its versions from 0 again.
+        self.rest_bias = rest_bias::RestBias::default();
     }
 
     /// Sets every awake dynamic body's force to the sum of the active forces at `heat`
@@ -363,8 +365,12 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             self.stress.hold_cold = self.rest_bias.holds(world, n);
             self.stress.apply(&frame, &mut self.sums);
         }
-        self.rest_bias
-            .take_from(world, &self.bodies.pushed, &mut self.sums.springs);
+        self.rest_bias.take_from(
+            world,
+            &self.bodies.pushed,
+            &mut self.sums.springs,
+            &mut self.sums.forces,
+        );
         for (s, f) in self.sums.forces.iter_mut().enumerate() {
             if !self.bodies.pushed[s] {
                 continue;
@@ -437,7 +443,9 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         dt: f32,
     ) {
         self.rest_bias = rest_bias::RestBias::default();
-        if config.stress.is_none() {
+        if config.stress.is_none() || config.cooling.is_none() {
+            // Without a schedule no node is ever heated, so the held pivot terms would
+            // never be worked out again.
             return;
         }
         let n = world.slot_count();
@@ -473,7 +481,12 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             self.stress.hold_cold = false;
             self.stress.apply(&frame, &mut self.sums);
         }
-        self.rest_bias = rest_bias::RestBias::capture(world, &self.sums.springs);
+        self.rest_bias = rest_bias::RestBias::capture(
+            world,
+            &self.bodies.pushed,
+            &self.sums.springs,
+            &self.sums.forces,
+        );
     }
 
     /// Forgets the rest's balance: the whole layout is laid out again.

@@ -19,35 +19,48 @@ use serde::{Deserialize, Serialize};
 
 use crate::world::RapierSceneWorld;
 
-/// The springs' pull on each body at the last cold stop, per unit of spring scale, by
-/// world slot, and the world version it belongs to.
+/// The pull on each body at the last cold stop, by world slot: the springs' per unit of
+/// spring scale, the other forces' as they were (the heat stays at its floor until a
+/// reheat of the whole layout forgets the balance), and the world version they belong
+/// to.
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub(crate) struct RestBias {
     per_slot: Vec<Vector2D<f32>>,
+    #[serde(default)]
+    others: Vec<Vector2D<f32>>,
     version: Option<u64>,
 }
 
 impl RestBias {
-    /// The balance of `springs` (the springs' pull on every body, by slot) in `world`.
+    /// The balance of `springs` and `forces` (every body's pull, by slot) in `world`,
+    /// kept for the dynamic bodies (`dynamic`); a body fixed or held then has none.
     pub(crate) fn capture<N: Clone + Eq + Hash>(
         world: &RapierSceneWorld<N>,
+        dynamic: &[bool],
         springs: &[Vector2D<f32>],
+        forces: &[Vector2D<f32>],
     ) -> Self {
         let scale = world.applied_spring_scale();
         if !(scale > 0.0 && scale.is_finite()) {
             return Self::default();
         }
+        let kept = |f: Vector2D<f32>, dynamic: bool| {
+            if dynamic && f.is_finite() {
+                f
+            } else {
+                Vector2D::zero()
+            }
+        };
         Self {
             per_slot: springs
                 .iter()
-                .map(|&f| {
-                    let f = f / scale;
-                    if f.is_finite() {
-                        f
-                    } else {
-                        Vector2D::zero()
-                    }
-                })
+                .zip(dynamic)
+                .map(|(&f, &d)| kept(f / scale, d))
+                .collect(),
+            others: forces
+                .iter()
+                .zip(dynamic)
+                .map(|(&f, &d)| kept(f, d))
                 .collect(),
             version: Some(world.version()),
         }
@@ -62,21 +75,23 @@ impl RestBias {
         self.version == Some(world.version()) && self.per_slot.len() == n
     }
 
-    /// Takes the balance off the springs' pull on each pushed body (a no-op once the
-    /// world changed since the capture).
+    /// Takes the balance off each pushed body's pull (a no-op once the world changed
+    /// since the capture).
     pub(crate) fn take_from<N: Clone + Eq + Hash>(
         &self,
         world: &RapierSceneWorld<N>,
         pushed: &[bool],
         springs: &mut [Vector2D<f32>],
+        forces: &mut [Vector2D<f32>],
     ) {
-        if self.version != Some(world.version()) || self.per_slot.len() != springs.len() {
+        if !self.holds(world, springs.len()) || self.others.len() != forces.len() {
             return;
         }
         let scale = world.applied_spring_scale();
-        for ((f, &bias), &pushed) in springs.iter_mut().zip(&self.per_slot).zip(pushed) {
+        for (s, &pushed) in pushed.iter().enumerate() {
             if pushed {
-                *f -= bias * scale;
+                springs[s] -= self.per_slot[s] * scale;
+                forces[s] -= self.others[s];
             }
         }
     }

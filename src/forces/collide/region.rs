@@ -11,14 +11,17 @@ use super::Collide;
 /// Below this many bodies every body is taken: a full grid costs well under a
 /// millisecond there.
 const REGION_AT_LEAST: usize = 10_000;
-/// The region is used while at most this share of the bodies moves.
-const MOVING_SHARE: usize = 8;
+/// The region is used while at most one body in this many moves: under one in ten, the
+/// motion the grid's cells allow (that of nine bodies in ten) is none, so the full
+/// search keeps no pair beyond a moving body's path and reach.
+const MOVING_SHARE: usize = 16;
 
 impl Collide {
     /// Marks in `self.region` (by slot) the bodies the separation takes this substep, or
     /// leaves it empty for all of them: with at least [`REGION_AT_LEAST`] bodies of
     /// which at most one in [`MOVING_SHARE`] moves (gives way or is driven), those whose
-    /// bounding box reaches the box around the moving bodies' swept bounding boxes.
+    /// bounding box reaches the box around the moving bodies' swept bounding boxes
+    /// (widened by their motion).
     /// Two bodies outside it cannot touch a moving one, and two still bodies need no
     /// contact.
     pub(super) fn mark_region(&mut self, points: &[Point2D<f32>]) {
@@ -42,9 +45,13 @@ impl Collide {
             if count * MOVING_SHARE > n {
                 return;
             }
-            let (to, half) = (p + by.motion[s], by.half[s]);
-            lo = lo.min(p.min(to) - half);
-            hi = hi.max(p.max(to) + half);
+            // The swept bounding box, widened by the motion's length: the full search
+            // keeps a pair within the bodies' reach and their relative motion.
+            let motion = by.motion[s];
+            let pad = by.half[s] + Vector2D::new(motion.length(), motion.length());
+            let to = p + motion;
+            lo = lo.min(p.min(to) - pad);
+            hi = hi.max(p.max(to) + pad);
         }
         if !(lo.is_finite() && hi.is_finite()) {
             // Nothing moves: nothing to separate but overlaps among still bodies.

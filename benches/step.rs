@@ -319,6 +319,18 @@ fn large(c: &mut Criterion) {
         RapierLayoutConfig::force_directed(),
         "force_directed_boxes",
     );
+    // Disks of the boxes' area (radius 20): what size alone costs.
+    let mut wide = scene("n10000_e25000");
+    for node in &mut wide.nodes {
+        node.radius = 20.0;
+    }
+    persistent_from(
+        c,
+        "n10000_e25000",
+        wide,
+        RapierLayoutConfig::force_directed(),
+        "force_directed_disks_r20",
+    );
     // The stress model: the first 150 frames, start included (its graphs rest within
     // them): the flat-out wall time to rest that docs/quality.md sets beside sfdp's.
     for name in ["3elt", "rgg_10000", "n10000_e25000"] {

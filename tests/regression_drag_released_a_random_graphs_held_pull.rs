@@ -38,21 +38,7 @@ fn a_drag_on_a_reopened_picture_of_a_random_graph_leaves_the_far_side_where_it_w
 fn drag_and_check(mut host: Host<u32>, what: &str) {
     let before = host.scene.clone();
     // The node nearest the centroid, dragged 100 units over 10 frames and let go.
-    let n = host.scene.nodes.len() as f32;
-    let centroid = host.scene.nodes.iter().fold(Vector2D::zero(), |c, node| {
-        c + node.position.to_vector() / n
-    });
-    let dragged = host
-        .scene
-        .nodes
-        .iter()
-        .min_by(|a, b| {
-            (a.position.to_vector() - centroid)
-                .length()
-                .total_cmp(&(b.position.to_vector() - centroid).length())
-        })
-        .map(|node| node.id)
-        .expect("nodes");
+    let (dragged, _) = nearest_and_farthest_from_centroid(&host.scene);
     let start = host.pos(&dragged);
     host.extras.dragging.insert(dragged);
     for k in 1..=10 {

@@ -72,28 +72,8 @@ fn a_box_dragged_into_a_settled_crowd_rests_apart_when_let_go() {
     for (preset, config) in presets() {
         let mut host = Host::new(label_boxes(load_scene("1138_bus"), |_| false), config);
         host.settle(300);
-        // The node nearest the centroid is the crowd; the dragged one comes from the
-        // outermost leaf.
-        let n = host.scene.nodes.len() as f32;
-        let centroid = host.scene.nodes.iter().fold(Point2D::origin(), |c, node| {
-            c + node.position.to_vector() / n
-        });
-        let nearest = |host: &Host<u32>| {
-            host.scene
-                .nodes
-                .iter()
-                .min_by(|a, b| dist(a.position, centroid).total_cmp(&dist(b.position, centroid)))
-                .map(|node| node.id)
-                .expect("nodes")
-        };
-        let middle = nearest(&host);
-        let dragged = host
-            .scene
-            .nodes
-            .iter()
-            .max_by(|a, b| dist(a.position, centroid).total_cmp(&dist(b.position, centroid)))
-            .map(|node| node.id)
-            .expect("nodes");
+        // The node nearest the centroid is the crowd; the dragged one is the farthest.
+        let (middle, dragged) = nearest_and_farthest_from_centroid(&host.scene);
         let (from, to) = (host.pos(&dragged), host.pos(&middle));
         host.extras.dragging.insert(dragged);
         for k in 1..=30 {

@@ -255,3 +255,31 @@ fn a_reshape_through_the_worker_reaches_the_layout() {
         "the disk {before} units away, covered by the box, is now at {d:?} from its centre"
     );
 }
+
+/// `hold` sends a host's own `LayoutExtras` as it changes: a pin from the next frame on,
+/// a drag where the host's scene has the node, and the release when it leaves
+/// `dragging`.
+#[test]
+fn hold_sends_the_hosts_drags_and_pins_as_they_change() {
+    let mut scene = ring(10);
+    let mut worker = LayoutWorker::spawn(scene.clone(), RapierLayoutConfig::stress());
+    rest(&mut worker);
+    let mut extras = LayoutExtras::default();
+    let pinned_at = at(&worker, 3);
+    extras.pinned.insert(3);
+    extras.dragging.insert(0);
+    let far = at(&worker, 0) + Vector2D::new(400.0, 0.0);
+    scene.nodes[0].position = far;
+    worker.hold(&scene, &extras);
+    assert_eq!(
+        at(&worker, 0),
+        far,
+        "the dragged node reads where the host put it"
+    );
+    assert!(!worker.is_converged(), "a drag in progress is motion");
+    extras.dragging.clear();
+    worker.hold(&scene, &extras);
+    rest(&mut worker);
+    assert_eq!(at(&worker, 3), pinned_at, "the pin held through the drag");
+    assert_ne!(at(&worker, 0), far, "released, node 0 was pulled back");
+}

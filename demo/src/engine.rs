@@ -3,7 +3,6 @@
 //! graph never holds up a frame. The demo's scene stays the source of what the graph
 //! is; with the worker, its edits go over as messages and the positions come back.
 
-use std::collections::BTreeSet;
 use std::time::Instant;
 
 use graph_canvas_layout::{
@@ -25,9 +24,6 @@ pub enum Engine {
     Worker {
         worker: Box<LayoutWorker<u32>>,
         config: Box<RapierLayoutConfig>,
-        /// The nodes the worker is told are dragged.
-        dragging: BTreeSet<u32>,
-        pinned: BTreeSet<u32>,
     },
 }
 
@@ -38,8 +34,6 @@ impl Engine {
             Engine::Worker {
                 worker: Box::new(LayoutWorker::spawn(scene.clone(), config.clone())),
                 config: Box::new(config),
-                dragging: BTreeSet::new(),
-                pinned: BTreeSet::new(),
             }
         } else {
             Engine::Direct {
@@ -103,13 +97,8 @@ impl Engine {
                 scene.apply_deltas(&deltas);
                 Some(took)
             }
-            Engine::Worker {
-                worker,
-                dragging,
-                pinned,
-                ..
-            } => {
-                sync_held(worker, scene, extras, dragging, pinned);
+            Engine::Worker { worker, .. } => {
+                worker.hold(scene, extras);
                 let frame = worker.frame();
                 for node in &mut scene.nodes {
                     if extras.dragging.contains(&node.id) {
@@ -135,16 +124,8 @@ impl Engine {
     }
 
     pub fn remove_node(&mut self, id: u32) {
-        if let Engine::Worker {
-            worker,
-            dragging,
-            pinned,
-            ..
-        } = self
-        {
+        if let Engine::Worker { worker, .. } = self {
             worker.remove_node(id);
-            dragging.remove(&id);
-            pinned.remove(&id);
         }
     }
 
@@ -166,39 +147,6 @@ impl Engine {
             worker.reshape(node.id, node.radius, node.shape);
         }
     }
-}
-
-/// Tells the worker which nodes the demo drags (and where) and pins, as they change.
-fn sync_held(
-    worker: &mut LayoutWorker<u32>,
-    scene: &CanvasSceneInput<u32>,
-    extras: &LayoutExtras<u32>,
-    dragging: &mut BTreeSet<u32>,
-    pinned: &mut BTreeSet<u32>,
-) {
-    for &id in dragging.iter() {
-        if !extras.dragging.contains(&id) {
-            worker.release(id);
-        }
-    }
-    dragging.retain(|id| extras.dragging.contains(id));
-    for node in &scene.nodes {
-        if extras.dragging.contains(&node.id) {
-            worker.drag(node.id, node.position);
-            dragging.insert(node.id);
-        }
-    }
-    for &id in pinned.iter() {
-        if !extras.pinned.contains(&id) {
-            worker.unpin(id);
-        }
-    }
-    for &id in &extras.pinned {
-        if pinned.insert(id) {
-            worker.pin(id);
-        }
-    }
-    pinned.retain(|id| extras.pinned.contains(id));
 }
 
 #[cfg(test)]

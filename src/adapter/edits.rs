@@ -388,7 +388,7 @@ fn insert_joints<N: Clone + Eq + Hash>(
 
 /// The node's radius, or the configured default for 0 (an unusable default counts
 /// as 16), as the world stores it: finite and non-negative.
-pub(super) fn radius_of<N>(config: &RapierLayoutConfig, node: &CanvasNode<N>) -> f32 {
+fn radius_of<N>(config: &RapierLayoutConfig, node: &CanvasNode<N>) -> f32 {
     if node.radius > 0.0 && node.radius.is_finite() {
         node.radius
     } else {

@@ -338,33 +338,8 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         let heat = law.alpha;
         let n = world.slot_count();
         self.bodies.gather(world);
-        self.sums.forces.clear();
-        self.sums.forces.resize(n, Vector2D::zero());
-        self.sums.springs.clear();
-        self.sums.springs.resize(n, Vector2D::zero());
-        self.sums.resistance.clear();
-        self.sums.resistance.resize(n, 0.0);
-        self.sums.pulls.clear();
-        self.sums.pulls.resize(n, [0.0; 3]);
-        let frame = ForceContext {
-            world,
-            config,
-            points: &self.bodies.points,
-            velocities: &self.bodies.velocities,
-            pushed: &self.bodies.pushed,
-            heat,
-            dt,
-            targets: &self.targets,
-        };
-        for force in &mut self.list {
-            if force.is_active(config, &self.targets) {
-                force.apply(&frame, &mut self.sums);
-            }
-        }
-        if BodyForce::<N>::is_active(&self.stress, config, &self.targets) {
-            self.stress.hold_cold = self.rest_bias.holds(world, n);
-            self.stress.apply(&frame, &mut self.sums);
-        }
+        let hold_cold = self.rest_bias.holds(world, n);
+        self.sum_forces(world, config, heat, dt, hold_cold);
         self.rest_bias.take_from(
             world,
             &self.bodies.pushed,
@@ -448,11 +423,33 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             // never be worked out again.
             return;
         }
-        let n = world.slot_count();
         self.bodies.gather(world);
         for (s, pushed) in self.bodies.pushed.iter_mut().enumerate() {
             *pushed = world.body_at(s).is_dynamic();
         }
+        // Every pivot term worked out afresh at the rest positions.
+        self.stress.renew_pivot_terms();
+        self.sum_forces(world, config, heat, dt, false);
+        self.rest_bias = rest_bias::RestBias::capture(
+            world,
+            &self.bodies.pushed,
+            &self.sums.springs,
+            &self.sums.forces,
+        );
+    }
+
+    /// Clears the sums and adds every active force's pull on the bodies `self.bodies`
+    /// (gathered) marks as pushed, the stress terms last, holding the pivot terms of
+    /// nodes not heated when `hold_cold`.
+    fn sum_forces(
+        &mut self,
+        world: &RapierSceneWorld<N>,
+        config: &RapierLayoutConfig,
+        heat: f32,
+        dt: f32,
+        hold_cold: bool,
+    ) {
+        let n = world.slot_count();
         for sums in [&mut self.sums.forces, &mut self.sums.springs] {
             sums.clear();
             sums.resize(n, Vector2D::zero());
@@ -477,16 +474,9 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             }
         }
         if BodyForce::<N>::is_active(&self.stress, config, &self.targets) {
-            self.stress.renew_pivot_terms();
-            self.stress.hold_cold = false;
+            self.stress.hold_cold = hold_cold;
             self.stress.apply(&frame, &mut self.sums);
         }
-        self.rest_bias = rest_bias::RestBias::capture(
-            world,
-            &self.bodies.pushed,
-            &self.sums.springs,
-            &self.sums.forces,
-        );
     }
 
     /// Forgets the rest's balance: the whole layout is laid out again.

@@ -60,15 +60,7 @@ impl NodeShape {
     /// Whether the layout can use the shape: a disk, or a box whose sides and corner
     /// radius are finite, non-negative and no larger than 2 × [`MAX_COORDINATE`].
     pub fn is_valid(&self) -> bool {
-        let ok = |v: f32| v.is_finite() && (0.0..=2.0 * MAX_COORDINATE).contains(&v);
-        match *self {
-            NodeShape::Disk => true,
-            NodeShape::Rect {
-                width,
-                height,
-                corner_radius,
-            } => ok(width) && ok(height) && ok(corner_radius),
-        }
+        self.problem().is_none()
     }
 
     /// The collider the layout gives a node of this shape: the disk of `radius` (the

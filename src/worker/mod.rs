@@ -18,7 +18,7 @@ use crate::config::RapierLayoutConfig;
 use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput};
 use crate::input::shape::NodeShape;
-use crate::layout::{LayoutExtras, NodeMap};
+use crate::layout::{LayoutExtras, NodeMap, NodeSet};
 #[cfg(doc)]
 use crate::RapierLayout;
 
@@ -112,6 +112,8 @@ pub struct LayoutWorker<N: Clone + Eq + Hash + Send + Sync + 'static> {
     latest: LayoutFrame<N>,
     /// Where the host holds each dragged node.
     drags: NodeMap<N, Point2D<f32>>,
+    /// The nodes the worker was told are pinned.
+    pinned: NodeSet<N>,
     /// The sequence number of the last message sent.
     sent: u64,
 }
@@ -146,6 +148,7 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
         let frame_time = frame_time.clamp(Duration::from_millis(1), Duration::from_secs(1));
         let (commands, receiver) = channel();
         let slot: Slot<N> = Arc::new(Mutex::new(None));
+        let pinned = extras.pinned.clone();
         let worker = Worker::new(
             scene,
             config,
@@ -164,6 +167,7 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
             thread: Some(thread),
             latest: LayoutFrame::default(),
             drags: NodeMap::default(),
+            pinned,
             sent: 0,
         }
     }
@@ -225,6 +229,7 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
     /// Removes node `id` and its edges, pin, drag and forces.
     pub fn remove_node(&mut self, id: N) {
         self.drags.remove(&id);
+        self.pinned.remove(&id);
         self.send(Command::RemoveNode(id));
     }
 
@@ -265,12 +270,35 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
 
     /// Pins node `id` where it is.
     pub fn pin(&mut self, id: N) {
+        self.pinned.insert(id.clone());
         self.send(Command::Pin(id, true));
     }
 
     /// Unpins node `id`.
     pub fn unpin(&mut self, id: N) {
+        self.pinned.remove(&id);
         self.send(Command::Pin(id, false));
+    }
+
+    /// Sends what `extras` says of drags and pins where it changed, node by node in
+    /// `scene`'s order: each dragged node where `scene` has it, a release for a node no
+    /// longer dragged, a pin or an unpin. A host that keeps its own [`LayoutExtras`]
+    /// calls this once a frame in place of [`drag`](Self::drag),
+    /// [`release`](Self::release), [`pin`](Self::pin) and [`unpin`](Self::unpin).
+    pub fn hold(&mut self, scene: &CanvasSceneInput<N>, extras: &LayoutExtras<N>) {
+        for node in &scene.nodes {
+            let id = &node.id;
+            if extras.dragging.contains(id) {
+                self.drag(id.clone(), node.position);
+            } else if self.drags.contains_key(id) {
+                self.release(id.clone());
+            }
+            match (extras.pinned.contains(id), self.pinned.contains(id)) {
+                (true, false) => self.pin(id.clone()),
+                (false, true) => self.unpin(id.clone()),
+                _ => {}
+            }
+        }
     }
 
     /// Sets node `id`'s per-node forces ([`NodeForces`]), or clears them with `None`.

@@ -135,4 +135,18 @@ pub fn positions<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> HashMap<N
         .map(|n| (n.id.clone(), n.position))
         .collect()
 }
+/// The nodes of `scene` nearest to the centroid of its positions and farthest from it.
+pub fn nearest_and_farthest_from_centroid(scene: &CanvasSceneInput<u32>) -> (u32, u32) {
+    let n = scene.nodes.len() as f32;
+    let centroid = scene.nodes.iter().fold(Point2D::origin(), |c, node| {
+        c + node.position.to_vector() / n
+    });
+    let by_distance = |a: &&CanvasNode<u32>, b: &&CanvasNode<u32>| {
+        dist(a.position, centroid).total_cmp(&dist(b.position, centroid))
+    };
+    let nearest = scene.nodes.iter().min_by(by_distance).expect("nodes");
+    let farthest = scene.nodes.iter().max_by(by_distance).expect("nodes");
+    (nearest.id, farthest.id)
+}
+
 pub mod session;

@@ -24,8 +24,6 @@ pub(crate) struct Synced {
     /// The edges as sent, and their hash.
     edges: Vec<(usize, usize)>,
     edges_hash: u64,
-    dragging: BTreeSet<usize>,
-    pinned: BTreeSet<usize>,
     config: RapierLayoutConfig,
     /// Where each node was put last frame, to tell a node the app moved.
     told: HashMap<usize, Pos2>,
@@ -62,8 +60,6 @@ impl Synced {
                 .into_iter()
                 .collect(),
             edges_hash: edges_hash(scene),
-            dragging: BTreeSet::new(),
-            pinned: extras.pinned.iter().copied().collect(),
             config,
             told: HashMap::new(),
         }
@@ -87,28 +83,10 @@ impl Synced {
             self.send_edges(scene);
             self.edges_hash = hash;
         }
-        for &id in &self.dragging {
-            if !extras.dragging.contains(&id) {
-                self.worker.release(id);
-            }
-        }
-        self.dragging.retain(|id| extras.dragging.contains(id));
-        for &id in &self.pinned {
-            if !extras.pinned.contains(&id) {
-                self.worker.unpin(id);
-            }
-        }
-        self.pinned.retain(|id| extras.pinned.contains(id));
-        for &id in &extras.pinned {
-            if self.pinned.insert(id) {
-                self.worker.pin(id);
-            }
-        }
+        self.worker.hold(scene, extras);
         for node in &scene.nodes {
             let at = Pos2::new(node.position.x, node.position.y);
             if extras.dragging.contains(&node.id) {
-                self.worker.drag(node.id, node.position);
-                self.dragging.insert(node.id);
                 // Where the pointer left it: no host move when it is let go.
                 self.told.insert(node.id, at);
             } else if self.told.get(&node.id).is_some_and(|&told| told != at) {
@@ -137,7 +115,6 @@ impl Synced {
         if known {
             self.worker.remove_node(id);
             self.told.remove(&id);
-            self.dragging.remove(&id);
         }
         known
     }
@@ -177,8 +154,6 @@ impl Synced {
                 self.worker.remove_node(id);
                 self.nodes.remove(&id);
                 self.told.remove(&id);
-                self.dragging.remove(&id);
-                self.pinned.remove(&id);
             }
         }
     }

@@ -64,8 +64,13 @@
 //! - `petgraph`: `CanvasSceneInput::from_petgraph` and `from_petgraph_with` for any
 //!   petgraph graph (`&Graph`, `&StableGraph`, `&GraphMap`) with its own node ids, and
 //!   `pub use petgraph` (0.8, the version egui_graphs builds on).
-//! - `parallel`: rapier's multi-threaded solver (rayon). It speeds up rapier's joints
-//!   and contacts, not the layout's own springs, disk separation and repulsion.
+//! - `parallel`: the layout's own Barnes–Hut repulsion, its contacts' pair search and
+//!   the stress terms on rayon's pool, and rapier's multi-threaded solver. The work is
+//!   cut into pieces that do not depend on the thread count, so a layout is
+//!   bit-identical on any number of threads and to a build without the feature. Run
+//!   `step` inside `ThreadPool::install` to choose the pool (a `LayoutWorker` beside a
+//!   UI thread: a pool of one thread fewer than the cores). The contacts' passes, the
+//!   edge springs and rapier's integration stay on the calling thread.
 //! - `enhanced-determinism`: rapier's cross-platform bit-exact math.
 //!
 //! ## FAQ
@@ -145,6 +150,7 @@ mod config;
 mod forces;
 mod input;
 mod layout;
+mod parallel;
 pub mod quality;
 mod sanitize;
 mod stress;

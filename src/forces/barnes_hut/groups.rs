@@ -7,6 +7,7 @@ use std::ops::Range;
 use euclid::default::{Point2D, Vector2D};
 
 use super::{ManyBody, Query, NONE};
+use crate::parallel;
 
 /// Most points that share one walk in [`ManyBody::forces`]: larger groups walk the tree
 /// less often but sum longer lists. 64 was the fastest of 8 to 256 on `n10000_e25000`
@@ -64,9 +65,15 @@ impl ManyBody {
             return;
         }
         let query = Query::new(strength, theta, min_distance);
-        let mut lists = std::mem::take(&mut self.lists);
+        // Asked once per point, in the tree's order.
+        let mut wanted_k = std::mem::take(&mut self.wanted);
+        wanted_k.clear();
+        wanted_k.extend(self.index.iter().map(|&i| wanted(i as usize)));
+        // The groups: the largest cells holding at most GROUP_SIZE points, depth first
+        // (so in the tree's order), those with a wanted member.
+        let mut groups = std::mem::take(&mut self.groups);
+        groups.clear();
         let mut stack = std::mem::take(&mut self.stack);
-        // The groups: the largest cells holding at most GROUP_SIZE points, depth first.
         stack.clear();
         stack.push(0);
         while let Some(g) = stack.pop() {
@@ -76,15 +83,37 @@ impl ManyBody {
                 continue;
             }
             let members = node.points();
-            if !members.clone().any(|k| wanted(self.index[k] as usize)) {
-                continue;
+            if wanted_k[members.clone()].contains(&true) {
+                groups.push(members);
             }
-            lists.collect_interactions(self, members.clone(), &query);
-            let wanted_members = members.filter(|&k| wanted(self.index[k] as usize));
-            lists.sum_for(self, wanted_members, &query, out);
         }
         self.stack = stack;
-        self.lists = lists;
+        // Each group's forces in the tree's order, the groups side by side under
+        // `parallel`: a point's force is its group's sum alone, on any thread.
+        let mut by_k = std::mem::take(&mut self.by_k);
+        by_k.clear();
+        by_k.resize(self.sorted.len(), Vector2D::zero());
+        {
+            let tree = &*self;
+            let mut jobs = parallel::split_ranges(&mut by_k, groups.iter().cloned());
+            parallel::for_each(
+                &mut jobs,
+                GroupLists::default,
+                |lists, (members, forces)| {
+                    lists.collect_interactions(tree, members.clone(), &query);
+                    let wanted_members = members.clone().filter(|&k| wanted_k[k]);
+                    lists.sum_for(tree, wanted_members, members.start, &query, forces);
+                },
+            );
+        }
+        for members in &groups {
+            for k in members.clone().filter(|&k| wanted_k[k]) {
+                out[self.index[k] as usize] = by_k[k];
+            }
+        }
+        self.groups = groups;
+        self.by_k = by_k;
+        self.wanted = wanted_k;
     }
 }
 
@@ -148,13 +177,14 @@ impl GroupLists {
         self.charge.push(charge);
     }
 
-    /// The force on each of `members` (positions in the tree order), written to `out` by
-    /// the point's index: [`BLOCK`] points a pass over the lists (a last block short of
+    /// The force on each of `members` (positions in the tree order), written to
+    /// `out[k - first]`: [`BLOCK`] points a pass over the lists (a last block short of
     /// members repeats its last one).
     fn sum_for(
         &self,
         tree: &ManyBody,
         members: impl Iterator<Item = usize>,
+        first: usize,
         query: &Query,
         out: &mut [Vector2D<f32>],
     ) {
@@ -170,7 +200,7 @@ impl GroupLists {
             block[filled..].fill(last);
             let forces = self.sum(block.map(|k| tree.sorted[k]), query);
             for (&k, f) in block.iter().zip(forces).take(filled) {
-                out[tree.index[k] as usize] = f;
+                out[k - first] = f;
             }
         }
     }

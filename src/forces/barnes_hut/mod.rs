@@ -14,8 +14,6 @@ use euclid::default::{Point2D, Vector2D};
 
 mod groups;
 
-use groups::GroupLists;
-
 const NONE: u32 = u32::MAX;
 /// The place of a point of the root square (`x`, `y` in `[0, 1)`) on the Z-order
 /// curve: the quadrant it falls in at every depth down to [`MAX_DEPTH`], the deepest
@@ -107,7 +105,11 @@ pub struct ManyBody {
     /// The cells still to split: (cell, first entry, entries, depth, half width).
     work: Vec<(u32, u32, u32, u32, f32)>,
     stack: Vec<u32>,
-    lists: GroupLists,
+    /// Scratch of [`forces`](Self::forces): the groups, whether each point (in the
+    /// tree's order) is wanted, and the forces in that order.
+    groups: Vec<std::ops::Range<usize>>,
+    wanted: Vec<bool>,
+    by_k: Vec<Vector2D<f32>>,
 }
 
 impl ManyBody {

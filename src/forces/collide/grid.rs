@@ -34,7 +34,7 @@ pub(super) struct Grid {
 impl Grid {
     /// Sorts the bodies (by slot) into the grid's cells and returns their slots in the
     /// grid's order (cell by cell, row by row; bodies without a finite position are left
-    /// out). [`pairs`](Self::pairs) takes the bodies in this order.
+    /// out). [`near_pairs`](Self::near_pairs) takes the bodies in this order.
     ///
     /// The cells are as wide as the widest body plus twice the usual motion (that of
     /// nine bodies in ten, up to a body's width), and as high as the highest body plus
@@ -84,37 +84,39 @@ impl Grid {
         self.usual
     }
 
-    /// Calls `pair(a, b, false)` for every two bodies in neighbouring cells, by their
-    /// place `a < b` in the grid's order (the order of [`sort`](Self::sort), which
-    /// `points` and `motion` follow), once each and in order (by `a`, then `b`); then
-    /// `pair(a, b, true)` for the bodies further apart that a body moving further than a
-    /// cell allows may meet on its path, in no order and possibly twice. Together they
-    /// hold every two bodies whose bounding boxes (`half`) come to touch as they move.
+    /// The bodies [`sort`](Self::sort) put in the grid.
+    pub(super) fn len(&self) -> usize {
+        self.cells.len()
+    }
+
+    /// Calls `pair(a, b)` for every two bodies in neighbouring cells with `a` at a place
+    /// in `first` of the grid's order (the order of [`sort`](Self::sort), which
+    /// `points` and `motion` follow) and `b` after it, once each and in order (by `a`,
+    /// then `b`), until `pair` returns `false`; returns whether it never did. Disjoint
+    /// runs of `first` find their pairs independently.
     ///
-    /// A fast body searches every cell along its path (in one pass over the bodies when
-    /// the path crosses more rows than there are bodies) for the slower ones; two fast
-    /// bodies may cross paths far from where either starts, so their swept boxes are
-    /// compared directly, sorted along x.
-    ///
-    /// `pair` returns whether to go on: the search stops at the first `false`.
-    pub(super) fn pairs(
-        &mut self,
-        points: &[Point2D<f32>],
-        half: &[Vector2D<f32>],
-        motion: &[Vector2D<f32>],
-        mut pair: impl FnMut(u32, u32, bool) -> bool,
-    ) {
+    /// With [`fast_pairs`](Self::fast_pairs) they find every two bodies whose bounding
+    /// boxes (`half`) come to touch as they move.
+    pub(super) fn near_pairs(
+        &self,
+        first: std::ops::Range<usize>,
+        mut pair: impl FnMut(u32, u32) -> bool,
+    ) -> bool {
         let cells = &self.cells;
         // The cells of the next row start at or after `below`: keys only grow.
-        let mut below = 0;
-        for (i, &(k, _)) in cells.iter().enumerate() {
+        let mut below = match cells.get(first.start) {
+            Some(&(k, _)) => cells.partition_point(|&(k2, _)| k2 < k + (1 << 32) - 1),
+            None => return true,
+        };
+        for i in first {
+            let k = cells[i].0;
             // The same cell (later entries) and the next cell of the same row.
             for (j, &(k2, _)) in cells.iter().enumerate().skip(i + 1) {
                 if k2 > k + 1 {
                     break;
                 }
-                if !pair(i as u32, j as u32, false) {
-                    return;
+                if !pair(i as u32, j as u32) {
+                    return false;
                 }
             }
             // The three cells of the next row.
@@ -126,11 +128,30 @@ impl Grid {
                 if k2 > first + 2 {
                     break;
                 }
-                if !pair(i as u32, j as u32, false) {
-                    return;
+                if !pair(i as u32, j as u32) {
+                    return false;
                 }
             }
         }
+        true
+    }
+
+    /// Calls `pair(a, b)` (`a < b`) for the bodies beyond the neighbouring cells that a
+    /// body moving further than a cell allows may meet on its path, in no order and
+    /// possibly twice, until `pair` returns `false`.
+    ///
+    /// A fast body searches every cell along its path (in one pass over the bodies when
+    /// the path crosses more rows than there are bodies) for the slower ones; two fast
+    /// bodies may cross paths far from where either starts, so their swept boxes are
+    /// compared directly, sorted along x.
+    pub(super) fn fast_pairs(
+        &mut self,
+        points: &[Point2D<f32>],
+        half: &[Vector2D<f32>],
+        motion: &[Vector2D<f32>],
+        mut pair: impl FnMut(u32, u32) -> bool,
+    ) {
+        let cells = &self.cells;
         // Bodies moving further than the cells allow search along their path, beyond
         // the neighbouring cells (those pairs came above).
         let (cell, usual) = (self.cell, self.usual);
@@ -153,7 +174,7 @@ impl Grid {
             self.swept
                 .push((lo.x - r.x, hi.x + r.x, lo.y - r.y, hi.y + r.y, a as u32));
             // Whether to go on (the neighbouring cells' pairs came above).
-            let mut found = |b: usize| near(a, b) || pair(a.min(b) as u32, a.max(b) as u32, true);
+            let mut found = |b: usize| near(a, b) || pair(a.min(b) as u32, a.max(b) as u32);
             let (top, bottom) = (index(lo.y - reach.y, cell.y), index(hi.y + reach.y, cell.y));
             let (left, right) = (index(lo.x - reach.x, cell.x), index(hi.x + reach.x, cell.x));
             if (bottom - top) as usize >= cells.len() {
@@ -208,7 +229,7 @@ impl Grid {
                 if top_b <= bottom
                     && top <= bottom_b
                     && !near(a, b)
-                    && !pair(a.min(b) as u32, a.max(b) as u32, true)
+                    && !pair(a.min(b) as u32, a.max(b) as u32)
                 {
                     return;
                 }

@@ -126,6 +126,8 @@ pub(crate) struct Collide {
     extra: Vec<Pair>,
     /// The buffer the two are merged into.
     merged: Vec<Pair>,
+    /// The pairs found run by run (`pairs.rs`).
+    runs: Vec<pairs::RunPairs>,
     points: Vec<Point2D<f32>>,
     /// The bounding radius and bounding box's half extents, and the outline as a box
     /// swept by a disk (`shapes.rs`).

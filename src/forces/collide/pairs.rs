@@ -9,8 +9,10 @@
 
 use euclid::default::{Point2D, Vector2D};
 
+use super::grid::Grid;
 use super::shapes::box_contact;
 use super::{coincident_normal, Collide, SLEEPING_OVERLAP};
+use crate::parallel;
 
 /// Whether two bodies `d` apart (from the first to the second) that move `relative` to
 /// each other over the substep, in a straight line, come within `within` of each other.
@@ -85,6 +87,131 @@ impl BySlot {
     }
 }
 
+/// The bodies of a run of the grid's order (`RUN`) and the pairs found for them.
+#[derive(Debug, Default)]
+pub(super) struct RunPairs {
+    pairs: Vec<Pair>,
+    /// Whether the run's search ended without reaching its bound.
+    complete: bool,
+}
+
+/// Bodies in neighbouring cells of the grid found in one run: a pass finds the
+/// neighbouring cells' pairs in runs of this many bodies of the grid's order, side by
+/// side under `parallel` (fixed, so the pairs do not depend on the thread count).
+const RUN: usize = 1_024;
+
+/// What the test of a candidate pair reads, by local index.
+struct Candidates<'a> {
+    points: &'a [Point2D<f32>],
+    radius: &'a [f32],
+    half: &'a [Vector2D<f32>],
+    inner: &'a [Vector2D<f32>],
+    round: &'a [f32],
+    boxes: bool,
+    inverse_mass: &'a [f32],
+    motion: &'a [Vector2D<f32>],
+    order: &'a [u32],
+    /// The motion the grid's cells allow.
+    slack: f32,
+    margin: f32,
+}
+
+impl Candidates<'_> {
+    /// Bodies `a < b` as a pair, or `None` if they cannot touch (nor come within the
+    /// margin) this substep, or need nothing.
+    fn pair(&self, a: u32, b: u32) -> Option<Pair> {
+        let Self {
+            points,
+            radius,
+            half,
+            inner,
+            round,
+            boxes,
+            inverse_mass,
+            motion,
+            order,
+            slack,
+            margin,
+        } = *self;
+        let (ia, ib) = (a as usize, b as usize);
+        let d = points[ib] - points[ia];
+        let relative = motion[ib] - motion[ia];
+        if boxes {
+            // Bounding boxes apart on an axis by more than the bodies move along it:
+            // they cannot touch this substep (most of a wide label's neighbours in
+            // the grid), found without a square root.
+            let reach = half[ia] + half[ib];
+            if d.x.abs() > reach.x + relative.x.abs() + margin
+                || d.y.abs() > reach.y + relative.y.abs() + margin
+            {
+                return None;
+            }
+        }
+        let reach = radius[ia] + radius[ib];
+        let moved = relative.length();
+        let near = reach + moved + margin;
+        let distance_sq = d.square_length();
+        if distance_sq > near * near {
+            return None;
+        }
+        // Two bodies moving fast relative to each other are a pair only if their
+        // paths come close: the disc above grows with the square of the motion, and
+        // in a hot, dense crowd it held millions of pairs that pass far apart (a
+        // 100,000-node graph with contacts from the first frame ran out of memory).
+        // Up to the usual motion the disc stands, as slack for what the solve
+        // changes of the velocities.
+        if moved > slack && !comes_within(d, relative, reach + margin + slack) {
+            return None;
+        }
+        let distance = distance_sq.sqrt();
+        // The direction two coincident bodies part along: one that depends only on
+        // their two slots.
+        let coincident = || {
+            let (sa, sb) = (order[ia], order[ib]);
+            if sa < sb {
+                coincident_normal(sa, sb)
+            } else {
+                -coincident_normal(sb, sa)
+            }
+        };
+        let outline = if boxes {
+            box_contact(inner, round, (ia, ib), d, coincident)
+        } else {
+            None
+        };
+        if outline.is_some_and(|(_, separation)| separation > moved + margin) {
+            // Bounding disks close, outlines further apart than they move.
+            return None;
+        }
+        let parted = match outline {
+            Some((_, separation)) => separation >= -SLEEPING_OVERLAP,
+            None => distance >= reach - SLEEPING_OVERLAP,
+        };
+        let still = motion[ia] == Vector2D::zero() && motion[ib] == Vector2D::zero();
+        if inverse_mass[ia] == 0.0 && inverse_mass[ib] == 0.0 && still && parted {
+            // Neither gives way nor moves, and they do not overlap: nothing to part.
+            // (Two that fell asleep overlapping are woken and parted.)
+            return None;
+        }
+        let (normal, separation) = outline.unwrap_or_else(|| {
+            let normal = if distance > 1e-6 {
+                d / distance
+            } else {
+                coincident()
+            };
+            (normal, distance - reach)
+        });
+        Some(Pair {
+            a,
+            b,
+            normal,
+            separation,
+            share_a: 0.0,
+            share_b: 0.0,
+        })
+    }
+}
+
 impl Collide {
     /// Puts the bodies (positions `points`, the rest in `self.by_slot`) in the grid's
     /// order: fills `order`, `local` and the local arrays.
@@ -140,10 +267,16 @@ impl Collide {
 
     /// The pairs that may touch, or come within `margin` of touching, each once,
     /// ordered by their local indices, and where each body's pairs start (`rows`).
+    ///
+    /// The neighbouring cells' pairs are found in runs of [`RUN`] bodies of the grid's
+    /// order, side by side under `parallel`, and joined in order: the same pairs as one
+    /// search in order, on any number of threads.
     pub(super) fn find_pairs(&mut self, margin: f32) {
         let Self {
             grid,
             pairs,
+            extra,
+            runs,
             points,
             radius,
             half,
@@ -153,104 +286,66 @@ impl Collide {
             inverse_mass,
             motion,
             order,
-            extra,
             ..
         } = self;
-        let boxes = *boxes;
+        let test = Candidates {
+            points,
+            radius,
+            half,
+            inner,
+            round,
+            boxes: *boxes,
+            inverse_mass,
+            motion,
+            order,
+            slack: grid.usual_motion(),
+            margin,
+        };
+        let budget = PAIRS_PER_BODY * points.len() + PAIRS_AT_LEAST;
+        let bodies = grid.len();
+        runs.resize_with(bodies.div_ceil(RUN), Default::default);
+        let complete = {
+            let grid: &Grid = grid;
+            let mut jobs: Vec<_> = runs.iter_mut().enumerate().collect();
+            parallel::for_each(
+                &mut jobs,
+                || (),
+                |(), (r, found)| {
+                    let first = *r * RUN..((*r + 1) * RUN).min(bodies);
+                    // A run alone holds at most what its bodies may (a run past that is
+                    // searched again below, in order, for what the budget keeps).
+                    let most = PAIRS_PER_BODY * first.len() + PAIRS_AT_LEAST;
+                    found.pairs.clear();
+                    found.complete = grid.near_pairs(first, |a, b| {
+                        found.pairs.extend(test.pair(a, b));
+                        found.pairs.len() < most
+                    });
+                },
+            );
+            jobs.iter().all(|(_, found)| found.complete)
+        };
         pairs.clear();
         extra.clear();
-        let slack = grid.usual_motion();
-        let budget = PAIRS_PER_BODY * points.len() + PAIRS_AT_LEAST;
-        grid.pairs(points, half, motion, |a, b, beyond| {
-            if pairs.len() + extra.len() >= budget {
-                // A crowd far denser than disks can be (thousands of nodes added at one
-                // point, contacts from a hot scatter's first frame): the pairs found so
-                // far are solved, the rest wait for a later substep.
-                return false;
+        if complete {
+            for found in runs.iter() {
+                pairs.extend_from_slice(&found.pairs);
             }
-            let (ia, ib) = (a as usize, b as usize);
-            let d = points[ib] - points[ia];
-            let relative = motion[ib] - motion[ia];
-            if boxes {
-                // Bounding boxes apart on an axis by more than the bodies move along it:
-                // they cannot touch this substep (most of a wide label's neighbours in
-                // the grid), found without a square root.
-                let reach = half[ia] + half[ib];
-                if d.x.abs() > reach.x + relative.x.abs() + margin
-                    || d.y.abs() > reach.y + relative.y.abs() + margin
-                {
-                    return true;
-                }
-            }
-            let reach = radius[ia] + radius[ib];
-            let moved = relative.length();
-            let near = reach + moved + margin;
-            let distance_sq = d.square_length();
-            if distance_sq > near * near {
-                return true;
-            }
-            // Two bodies moving fast relative to each other are a pair only if their
-            // paths come close: the disc above grows with the square of the motion, and
-            // in a hot, dense crowd it held millions of pairs that pass far apart (a
-            // 100,000-node graph with contacts from the first frame ran out of memory).
-            // Up to the usual motion the disc stands, as slack for what the solve
-            // changes of the velocities.
-            if moved > slack && !comes_within(d, relative, reach + margin + slack) {
-                return true;
-            }
-            let distance = distance_sq.sqrt();
-            // The direction two coincident bodies part along: one that depends only on
-            // their two slots.
-            let coincident = || {
-                let (sa, sb) = (order[ia], order[ib]);
-                if sa < sb {
-                    coincident_normal(sa, sb)
-                } else {
-                    -coincident_normal(sb, sa)
-                }
-            };
-            let outline = if boxes {
-                box_contact(inner, round, (ia, ib), d, coincident)
-            } else {
-                None
-            };
-            if outline.is_some_and(|(_, separation)| separation > moved + margin) {
-                // Bounding disks close, outlines further apart than they move.
-                return true;
-            }
-            let parted = match outline {
-                Some((_, separation)) => separation >= -SLEEPING_OVERLAP,
-                None => distance >= reach - SLEEPING_OVERLAP,
-            };
-            let still = motion[ia] == Vector2D::zero() && motion[ib] == Vector2D::zero();
-            if inverse_mass[ia] == 0.0 && inverse_mass[ib] == 0.0 && still && parted {
-                // Neither gives way nor moves, and they do not overlap: nothing to part.
-                // (Two that fell asleep overlapping are woken and parted.)
-                return true;
-            }
-            let (normal, separation) = outline.unwrap_or_else(|| {
-                let normal = if distance > 1e-6 {
-                    d / distance
-                } else {
-                    coincident()
-                };
-                (normal, distance - reach)
+            pairs.truncate(budget);
+        } else {
+            // A crowd far denser than disks can be (thousands of nodes added at one
+            // point, contacts from a hot scatter's first frame): the pairs found in
+            // order up to the budget are solved, the rest wait for a later substep.
+            grid.near_pairs(0..bodies, |a, b| {
+                pairs.extend(test.pair(a, b));
+                pairs.len() < budget
             });
-            let pair = Pair {
-                a,
-                b,
-                normal,
-                separation,
-                share_a: 0.0,
-                share_b: 0.0,
-            };
-            if beyond {
-                extra.push(pair);
-            } else {
-                pairs.push(pair);
-            }
-            true
-        });
+        }
+        if pairs.len() < budget {
+            grid.fast_pairs(points, half, motion, |a, b| {
+                extra.extend(test.pair(a, b));
+                pairs.len() + extra.len() < budget
+            });
+        }
         if !self.extra.is_empty() {
             self.merge_extra();
         }
@@ -330,222 +425,4 @@ impl Collide {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A fixed sequence in `[0, 1)`.
-    fn sequence(seed: u64) -> impl FnMut() -> f32 {
-        let mut state = seed;
-        move || {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (state >> 40) as f32 / (1_u64 << 24) as f32
-        }
-    }
-
-    /// Every two bodies that touch as they move over the substep are found once, in
-    /// order, whether they move within a cell or further: the grid's cells allow the
-    /// motion of nine bodies in ten, the rest search the strip along their path, and two
-    /// fast bodies crossing paths find each other by their swept boxes. Pairs moving
-    /// fast relative to each other are kept only where their paths come close.
-    #[test]
-    fn finds_every_pair_that_may_touch_once_and_in_order() {
-        for seed in 1..=6 {
-            let mut next = sequence(seed);
-            let n = 600;
-            let mut collide = Collide::default();
-            let mut points = Vec::new();
-            for s in 0..n {
-                // A dense cluster, with one body in eight moving far (up to 12 radii)
-                // and one in fifty across it and beyond, diagonally (a path far longer
-                // than the cells, searched row by row along its strip).
-                points.push(Point2D::new(next() * 400.0, next() * 300.0));
-                let reach = if s % 50 == 0 {
-                    3_000.0
-                } else if s % 8 == 0 {
-                    200.0
-                } else {
-                    6.0
-                };
-                collide.by_slot.radius.push(4.0 + next() * 12.0);
-                collide.by_slot.inverse_mass.push(1.0);
-                collide.by_slot.velocity.push(Vector2D::zero());
-                collide.by_slot.motion.push(Vector2D::new(
-                    (next() - 0.5) * reach,
-                    (next() - 0.5) * reach,
-                ));
-                collide.by_slot.sleeping.push(false);
-            }
-            // Two fast bodies that cross paths, far from where either starts.
-            for k in 0..10 {
-                let meet = Point2D::new(500.0 + 60.0 * k as f32, 100.0 * seed as f32);
-                for (from, motion) in [
-                    (Vector2D::new(-300.0, 0.0), Vector2D::new(600.0, 0.0)),
-                    (Vector2D::new(0.0, -300.0), Vector2D::new(0.0, 600.0)),
-                ] {
-                    points.push(meet + from);
-                    collide.by_slot.radius.push(8.0);
-                    collide.by_slot.inverse_mass.push(1.0);
-                    collide.by_slot.velocity.push(Vector2D::zero());
-                    collide.by_slot.motion.push(motion);
-                    collide.by_slot.sleeping.push(false);
-                }
-            }
-            let n = points.len();
-            collide.take_in_grid_order(&points);
-            collide.find_pairs(0.0);
-            let found: Vec<(u32, u32)> = collide.pairs.iter().map(|p| (p.a, p.b)).collect();
-            assert!(
-                found.windows(2).all(|w| w[0] < w[1]),
-                "seed {seed}: pairs out of order or twice"
-            );
-            let (p, r, m) = (&collide.points, &collide.radius, &collide.motion);
-            // The closest two bodies come as they move over the substep.
-            let closest = |a: usize, b: usize| {
-                let (d, v) = (p[b] - p[a], m[b] - m[a]);
-                let t = if v.square_length() > 0.0 {
-                    (-d.dot(v) / v.square_length()).clamp(0.0, 1.0)
-                } else {
-                    0.0
-                };
-                (d + v * t).length()
-            };
-            let mut expected = Vec::new();
-            for a in 0..n {
-                for b in a + 1..n {
-                    if closest(a, b) <= r[a] + r[b] {
-                        expected.push((a as u32, b as u32));
-                    }
-                }
-            }
-            // Exactly the pairs the rule keeps: within their relative motion of touching
-            // at the start, and, when that motion is above the usual one (the slack),
-            // coming within the slack of touching on their paths. Fast bodies' paths and
-            // swept boxes must find every such pair the neighbouring cells do not hold.
-            let slack = collide.grid.usual_motion();
-            let mut kept = Vec::new();
-            for a in 0..n {
-                for b in a + 1..n {
-                    let (reach, moved) = (r[a] + r[b], (m[b] - m[a]).length());
-                    if (p[b] - p[a]).length() <= reach + moved
-                        && (moved <= slack || closest(a, b) <= reach + slack)
-                    {
-                        kept.push((a as u32, b as u32));
-                    }
-                }
-            }
-            let unfound: Vec<_> = kept
-                .iter()
-                .filter(|e| found.binary_search(e).is_err())
-                .collect();
-            assert!(
-                found.len() == kept.len() && unfound.is_empty(),
-                "seed {seed}: found {} pairs, the rule keeps {}; first not found {:?}",
-                found.len(),
-                kept.len(),
-                unfound.first()
-            );
-            let missing: Vec<_> = expected
-                .iter()
-                .filter(|e| found.binary_search(e).is_err())
-                .collect();
-            assert!(
-                missing.is_empty() && !expected.is_empty(),
-                "seed {seed}: {} of {} pairs missed, first {:?}",
-                missing.len(),
-                expected.len(),
-                missing.first()
-            );
-        }
-    }
-
-    /// Label boxes of many widths and heights, still: every two whose outlines touch or
-    /// overlap are found (the grid's cells are as wide as the widest box and as high as
-    /// the highest, and the test of a pair drops only bounding boxes apart on an axis).
-    #[test]
-    fn finds_every_pair_of_boxes_that_touch() {
-        for seed in 1..=4 {
-            let mut next = sequence(seed);
-            let mut collide = Collide::default();
-            let mut points = Vec::new();
-            for _ in 0..500 {
-                points.push(Point2D::new(next() * 600.0, next() * 300.0));
-                let half = Vector2D::new(5.0 + next() * 35.0, 3.0 + next() * 9.0);
-                collide.by_slot.radius.push(half.length());
-                collide.by_slot.half.push(half);
-                collide.by_slot.inner.push(half);
-                collide.by_slot.round.push(0.0);
-                collide.by_slot.inverse_mass.push(1.0);
-                collide.by_slot.velocity.push(Vector2D::zero());
-                collide.by_slot.motion.push(Vector2D::zero());
-                collide.by_slot.sleeping.push(false);
-            }
-            collide.take_in_grid_order(&points);
-            collide.find_pairs(0.0);
-            let found: Vec<(u32, u32)> = collide.pairs.iter().map(|p| (p.a, p.b)).collect();
-            let (p, inner) = (&collide.points, &collide.inner);
-            let mut missing = Vec::new();
-            let mut touching = 0;
-            for a in 0..p.len() {
-                for b in a + 1..p.len() {
-                    let d = p[b] - p[a];
-                    let (_, separation) =
-                        super::super::shapes::contact(d, inner[a] + inner[b], 0.0, Vector2D::zero);
-                    if separation <= 0.0 {
-                        touching += 1;
-                        if found.binary_search(&(a as u32, b as u32)).is_err() {
-                            missing.push((a, b, separation));
-                        }
-                    }
-                }
-            }
-            assert!(
-                missing.is_empty() && touching > 0,
-                "seed {seed}: {} of {touching} touching boxes missed, first {:?}",
-                missing.len(),
-                missing.first()
-            );
-        }
-    }
-
-    /// A crowd far denser than disks can be (every body within a unit of one point, as
-    /// when thousands of nodes are added at one point): every two bodies touch, and the
-    /// search keeps to its budget, the pairs found first, in order and each once,
-    /// instead of the half-million pairs of all two of them.
-    #[test]
-    fn a_crowd_denser_than_disks_keeps_to_the_budget() {
-        let mut next = sequence(7);
-        let n = 1_000;
-        let mut collide = Collide::default();
-        let points: Vec<_> = (0..n)
-            .map(|_| Point2D::new(next() - 0.5, next() - 0.5))
-            .collect();
-        for _ in 0..n {
-            collide.by_slot.radius.push(16.0);
-            collide.by_slot.inverse_mass.push(1.0);
-            collide.by_slot.velocity.push(Vector2D::zero());
-            collide.by_slot.motion.push(Vector2D::zero());
-            collide.by_slot.sleeping.push(false);
-        }
-        collide.take_in_grid_order(&points);
-        collide.find_pairs(0.0);
-        let budget = PAIRS_PER_BODY * n + PAIRS_AT_LEAST;
-        let found: Vec<(u32, u32)> = collide.pairs.iter().map(|p| (p.a, p.b)).collect();
-        assert_eq!(
-            found.len(),
-            budget,
-            "{} pairs kept of the {} that touch",
-            found.len(),
-            n * (n - 1) / 2
-        );
-        assert!(
-            found.windows(2).all(|w| w[0] < w[1]),
-            "pairs out of order or twice"
-        );
-        assert_eq!(
-            collide.rows[n] as usize, budget,
-            "rows count every pair kept"
-        );
-    }
-}
+mod tests;

@@ -20,6 +20,7 @@ use sums::{padded, pivot_pull};
 
 mod sums;
 use crate::config::RapierLayoutConfig;
+use crate::parallel;
 use crate::stress::graph::Graph;
 use crate::stress::model::{Reach, SparseStress};
 use crate::world::RapierSceneWorld;
@@ -48,11 +49,9 @@ pub(crate) struct StressForce {
     /// Where each component's pivots start in `xs` and `ys`.
     #[serde(skip)]
     pivot_start: Vec<usize>,
-    /// One node's distances to its pivots and their weights, gathered before its sum.
+    /// Scratch: which nodes are heated, for a held layout.
     #[serde(skip)]
-    hops: Vec<f32>,
-    #[serde(skip)]
-    weights: Vec<f32>,
+    heated: Vec<bool>,
     /// Set for each substep by the forces: the layout rested and keeps its rest's
     /// balance (`rest_bias.rs`), so the pivot terms are held for every node the
     /// disturbance did not heat (worked out afresh only for the heated ones), and a node
@@ -231,74 +230,163 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for StressForce {
                 self.ys.resize(width, 0.0);
             }
         }
-        let model = &self.model;
-        for i in 0..n.min(model.component.len()) {
-            if !frame.pushed[i] {
-                continue;
-            }
-            let p = frame.points[i];
-            let (mut f, mut stiffness) = (Vector2D::zero(), 0.0_f32);
-            let (near, near_hops) = model.near_terms_of(i);
-            let scale = model.near_scale[i];
-            for (&j, &d) in near.iter().zip(near_hops) {
-                let d = f32::from(d);
-                let w = scale / (d * d);
-                f += pull(p, frame.points[j as usize], hop * d, k * w);
-                stiffness += k * w;
-            }
-            if fresh && (!hold_cold || frame.world.host_at(i).heat > 0.0) {
-                let c = model.component[i] as usize;
-                let (a, b) = model.pivot_range[c];
-                let width = padded((b - a) as usize);
-                let start = self.pivot_start[c];
-                let (xs, ys) = (
-                    &self.xs[start..start + width],
-                    &self.ys[start..start + width],
-                );
-                let (_, hops) = model.pivot_terms(i);
-                // The node's distances and weights, padded to whole lanes.
-                self.hops.clear();
-                self.weights.clear();
-                if model.full[c] {
-                    for &d in hops {
-                        let d = f32::from(d);
-                        self.hops.push(d);
-                        self.weights
-                            .push(if d >= 2.0 { 1.0 / (d * d) } else { 0.0 });
-                    }
-                } else {
-                    let stride = model.stride[c] as usize;
-                    let tables = model.component_weights(c);
-                    for (t, &d) in hops.iter().enumerate() {
-                        self.hops.push(f32::from(d));
-                        self.weights
-                            .push(tables[t * stride + (d as usize).min(stride - 1)]);
+        let end = n.min(self.model.component.len());
+        // Which nodes a held layout works out afresh (read here: a host's node type
+        // need not be shared between threads).
+        let mut heated = std::mem::take(&mut self.heated);
+        heated.clear();
+        if fresh && hold_cold {
+            heated.extend((0..end).map(|i| frame.world.host_at(i).heat > 0.0));
+        }
+        let terms = NodeTerms {
+            model: &self.model,
+            points: frame.points,
+            pushed: frame.pushed,
+            heated: &heated,
+            xs: &self.xs,
+            ys: &self.ys,
+            pivot_start: &self.pivot_start,
+            hop,
+            k,
+            fresh,
+            hold_cold,
+        };
+        // Runs of nodes side by side under `parallel`: a node's sums are its own, so the
+        // bits do not depend on the thread count.
+        let mut jobs: Vec<_> = self.pivot_force[..end]
+            .chunks_mut(NODES_A_RUN)
+            .zip(self.pivot_stiffness[..end].chunks_mut(NODES_A_RUN))
+            .zip(self.pivot_at[..end].chunks_mut(NODES_A_RUN))
+            .zip(out.springs[..end].chunks_mut(NODES_A_RUN))
+            .zip(out.resistance[..end].chunks_mut(NODES_A_RUN))
+            .enumerate()
+            .map(|(r, ((((force, stiffness), at), springs), resistance))| {
+                let held = Held {
+                    force,
+                    stiffness,
+                    at,
+                };
+                (r * NODES_A_RUN, held, springs, resistance)
+            })
+            .collect();
+        parallel::for_each(
+            &mut jobs,
+            <(Vec<f32>, Vec<f32>)>::default,
+            |scratch, (first, held, springs, resistance)| {
+                for o in 0..springs.len() {
+                    if let Some((f, stiffness)) = terms.pull_on(*first + o, held, o, scratch) {
+                        springs[o] += f;
+                        resistance[o] += dt2 * stiffness;
                     }
                 }
-                self.hops.resize(width, 0.0);
-                self.weights.resize(width, 0.0);
-                let pull = pivot_pull((p.x, p.y), xs, ys, &self.hops, &self.weights, hop, k);
-                self.pivot_force[i] = Vector2D::new(pull.x, pull.y);
-                self.pivot_stiffness[i] = pull.stiffness;
-                self.pivot_at[i] = p;
-            }
-            // Held between evaluations as its first-order model about where it was worked
-            // out: the force less the stiffness times the way moved since (what the
-            // implicit step assumes of it), so a held force does not push a node past
-            // its balance.
-            let moved = p - self.pivot_at[i];
-            f += self.pivot_force[i] - moved * self.pivot_stiffness[i];
-            stiffness += self.pivot_stiffness[i];
-            if f.is_finite() && stiffness.is_finite() {
-                out.springs[i] += f;
-                out.resistance[i] += dt2 * stiffness;
-            }
-        }
+            },
+        );
+        self.heated = heated;
     }
 
     fn reset(&mut self) {
         // A new world counts its versions from 0 again.
         *self = Self::default();
+    }
+}
+
+/// Nodes whose stress terms are summed in one run (fixed, so the sums do not depend on
+/// the thread count).
+const NODES_A_RUN: usize = 512;
+
+/// A run of nodes' held pivot terms (`StressForce::pivot_force` and the rest).
+struct Held<'a> {
+    force: &'a mut [Vector2D<f32>],
+    stiffness: &'a mut [f32],
+    at: &'a mut [Point2D<f32>],
+}
+
+/// What a node's stress terms read on one substep.
+struct NodeTerms<'a> {
+    model: &'a SparseStress,
+    points: &'a [Point2D<f32>],
+    pushed: &'a [bool],
+    /// With `hold_cold`, whether each node is heated.
+    heated: &'a [bool],
+    /// The pivots' positions and where each component's start.
+    xs: &'a [f32],
+    ys: &'a [f32],
+    pivot_start: &'a [usize],
+    hop: f32,
+    k: f32,
+    /// Whether the pivot terms are worked out this substep, and held for the nodes not
+    /// heated.
+    fresh: bool,
+    hold_cold: bool,
+}
+
+impl NodeTerms<'_> {
+    /// The pull of node `i`'s terms and their stiffness, or `None` for a node not
+    /// pushed or a sum not finite. Works out its pivot terms again when they are due,
+    /// into `held` at `o`; `scratch` holds the node's distances and weights.
+    fn pull_on(
+        &self,
+        i: usize,
+        held: &mut Held<'_>,
+        o: usize,
+        (hops_buffer, weights): &mut (Vec<f32>, Vec<f32>),
+    ) -> Option<(Vector2D<f32>, f32)> {
+        if !self.pushed[i] {
+            return None;
+        }
+        let (model, hop, k) = (self.model, self.hop, self.k);
+        let p = self.points[i];
+        let (mut f, mut stiffness) = (Vector2D::zero(), 0.0_f32);
+        let (near, near_hops) = model.near_terms_of(i);
+        let scale = model.near_scale[i];
+        for (&j, &d) in near.iter().zip(near_hops) {
+            let d = f32::from(d);
+            let w = scale / (d * d);
+            f += pull(p, self.points[j as usize], hop * d, k * w);
+            stiffness += k * w;
+        }
+        if self.fresh && (!self.hold_cold || self.heated[i]) {
+            let c = model.component[i] as usize;
+            let (a, b) = model.pivot_range[c];
+            let width = padded((b - a) as usize);
+            let start = self.pivot_start[c];
+            let (xs, ys) = (
+                &self.xs[start..start + width],
+                &self.ys[start..start + width],
+            );
+            let (_, hops) = model.pivot_terms(i);
+            // The node's distances and weights, padded to whole lanes.
+            hops_buffer.clear();
+            weights.clear();
+            if model.full[c] {
+                for &d in hops {
+                    let d = f32::from(d);
+                    hops_buffer.push(d);
+                    weights.push(if d >= 2.0 { 1.0 / (d * d) } else { 0.0 });
+                }
+            } else {
+                let stride = model.stride[c] as usize;
+                let tables = model.component_weights(c);
+                for (t, &d) in hops.iter().enumerate() {
+                    hops_buffer.push(f32::from(d));
+                    weights.push(tables[t * stride + (d as usize).min(stride - 1)]);
+                }
+            }
+            hops_buffer.resize(width, 0.0);
+            weights.resize(width, 0.0);
+            let pull = pivot_pull((p.x, p.y), xs, ys, hops_buffer, weights, hop, k);
+            held.force[o] = Vector2D::new(pull.x, pull.y);
+            held.stiffness[o] = pull.stiffness;
+            held.at[o] = p;
+        }
+        // Held between evaluations as its first-order model about where it was worked
+        // out: the force less the stiffness times the way moved since (what the
+        // implicit step assumes of it), so a held force does not push a node past
+        // its balance.
+        let moved = p - held.at[o];
+        f += held.force[o] - moved * held.stiffness[o];
+        stiffness += held.stiffness[o];
+        (f.is_finite() && stiffness.is_finite()).then_some((f, stiffness))
     }
 }
 

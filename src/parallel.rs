@@ -1,0 +1,53 @@
+//! Work the layout spreads over rayon's pool under the `parallel` feature (and does in
+//! order on the calling thread without it): one place that knows whether the feature is
+//! on, so a force only says which of its parts are independent.
+//!
+//! Every use splits its work into pieces that do not depend on the thread count (a
+//! Barnes–Hut group, a fixed run of springs or of the grid's bodies) and puts their
+//! results together in the pieces' order, so what a piece computes, and the sum it
+//! ends in, are the same on any number of threads: with the feature on or off, the
+//! forces are bit-identical.
+
+#[cfg(feature = "parallel")]
+use rayon::prelude::*;
+
+/// Runs `f` on every item of `items`, each with a scratch state made by `init` (one a
+/// thread's run of items under `parallel`, one in all without): on rayon's pool under
+/// `parallel`, in order otherwise.
+pub(crate) fn for_each<T: Send, S>(
+    items: &mut [T],
+    init: impl Fn() -> S + Sync + Send,
+    f: impl Fn(&mut S, &mut T) + Sync + Send,
+) {
+    #[cfg(feature = "parallel")]
+    items.par_iter_mut().for_each_init(init, f);
+    #[cfg(not(feature = "parallel"))]
+    {
+        let mut scratch = init();
+        for item in items {
+            f(&mut scratch, item);
+        }
+    }
+}
+
+/// Splits `buffer` into the disjoint, ascending `ranges` of it, each with its range.
+///
+/// # Panics
+/// If the ranges are not ascending and disjoint, or run past the buffer.
+pub(crate) fn split_ranges<T>(
+    buffer: &mut [T],
+    ranges: impl IntoIterator<Item = std::ops::Range<usize>>,
+) -> Vec<(std::ops::Range<usize>, &mut [T])> {
+    let mut rest = buffer;
+    let mut at = 0;
+    let mut out = Vec::new();
+    for range in ranges {
+        let tail = std::mem::take(&mut rest);
+        let (_, tail) = tail.split_at_mut(range.start - at);
+        let (mine, tail) = tail.split_at_mut(range.len());
+        at = range.end;
+        rest = tail;
+        out.push((range, mine));
+    }
+    out
+}

@@ -65,12 +65,17 @@
 //!   petgraph graph (`&Graph`, `&StableGraph`, `&GraphMap`) with its own node ids, and
 //!   `pub use petgraph` (0.8, the version egui_graphs builds on).
 //! - `parallel`: the layout's own Barnes–Hut repulsion, its contacts' pair search and
-//!   the stress terms on rayon's pool, and rapier's multi-threaded solver. The work is
-//!   cut into pieces that do not depend on the thread count, so a layout is
-//!   bit-identical on any number of threads and to a build without the feature. Run
-//!   `step` inside `ThreadPool::install` to choose the pool (a `LayoutWorker` beside a
-//!   UI thread: a pool of one thread fewer than the cores). The contacts' passes, the
-//!   edge springs and rapier's integration stay on the calling thread.
+//!   the stress terms on rayon's pool, and rapier's own parallel parts (its solver).
+//!   The layout's work is cut into pieces that do not depend on the thread count, so a
+//!   layout whose contacts are the layout's own ([`RapierLayoutConfig::force_directed`],
+//!   [`RapierLayoutConfig::stress`]) is bit-identical on any number of threads and to a
+//!   build without the feature; with rapier's contacts or joints, rapier decides (see
+//!   `docs/performance.md`). `step` runs on the pool of the thread that calls it:
+//!   rayon's global pool, or a pool of the host's own (`rayon::ThreadPool::install`,
+//!   with rayon among the host's dependencies). A [`LayoutWorker`] steps on a pool of
+//!   its own with one thread fewer than the machine has cores, so the UI thread keeps a
+//!   core (`LayoutWorker::spawn_on_threads` chooses the count). The contacts' passes
+//!   and the edge springs stay on the calling thread.
 //! - `enhanced-determinism`: rapier's cross-platform bit-exact math.
 //!
 //! ## FAQ

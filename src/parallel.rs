@@ -3,17 +3,18 @@
 //! on, so a force only says which of its parts are independent.
 //!
 //! Every use splits its work into pieces that do not depend on the thread count (a
-//! Barnes–Hut group, a fixed run of springs or of the grid's bodies) and puts their
-//! results together in the pieces' order, so what a piece computes, and the sum it
-//! ends in, are the same on any number of threads: with the feature on or off, the
+//! Barnes–Hut group, a fixed run of the grid's bodies or of the stress nodes) and puts
+//! their results together in the pieces' order, so what a piece computes, and the sum
+//! it ends in, are the same on any number of threads: with the feature on or off, the
 //! forces are bit-identical.
 
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
-/// Runs `f` on every item of `items`, each with a scratch state made by `init` (one a
-/// thread's run of items under `parallel`, one in all without): on rayon's pool under
-/// `parallel`, in order otherwise.
+/// Runs `f` on every item of `items`, each with a scratch state made by `init`: on
+/// rayon's pool under `parallel` (a state for each piece of work rayon splits off, so
+/// `f` must not let what a state held before change its result), in order with one
+/// state for all otherwise.
 pub(crate) fn for_each<T: Send, S>(
     items: &mut [T],
     init: impl Fn() -> S + Sync + Send,

@@ -67,3 +67,57 @@ fn a_layout_is_bit_identical_on_one_thread_and_on_two() {
         );
     }
 }
+
+/// The default configuration leaves contacts and edges to rapier (colliders and
+/// joints), whose parallel solver splits its work by the pool's size: on a given
+/// number of threads, a layout is still the same bits run after run.
+#[test]
+fn rapiers_contacts_give_the_same_bits_on_the_same_pool() {
+    let first = run("1138_bus", RapierLayoutConfig::default(), 2, 60);
+    let again = run("1138_bus", RapierLayoutConfig::default(), 2, 60);
+    assert!(first.first() != first.last(), "nothing moved in 60 frames");
+    assert_eq!(
+        first_difference(&first, &again),
+        None,
+        "(frame, node) where a second run on 2 threads first differs"
+    );
+}
+
+/// A worker on a pool of one thread of its own (the host's UI thread keeps the other
+/// core) lays a ring out to rest, with the node the host pinned where it was.
+#[test]
+fn a_worker_on_a_pool_of_its_own_lays_a_ring_out() {
+    use graph_canvas_layout::euclid::default::Point2D;
+    use graph_canvas_layout::{CanvasEdge, CanvasNode, CanvasSceneInput, LayoutWorker};
+    let scene = CanvasSceneInput::new(
+        (0..12)
+            .map(|i| CanvasNode::new(i, Point2D::new(i as f32, 0.0)))
+            .collect(),
+        (0..12).map(|i| CanvasEdge::new(i, (i + 1) % 12)).collect(),
+    );
+    let mut extras = graph_canvas_layout::LayoutExtras::default();
+    extras.pinned.insert(0);
+    let mut worker = LayoutWorker::spawn_on_threads(
+        scene,
+        RapierLayoutConfig::stress(),
+        extras,
+        std::time::Duration::from_millis(2),
+        1,
+    );
+    let started = std::time::Instant::now();
+    while !worker.is_converged() {
+        assert!(
+            started.elapsed().as_secs() < 60,
+            "not at rest within a minute"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(5));
+        worker.frame();
+    }
+    let (pinned, across) = (worker.position(&0).unwrap(), worker.position(&6).unwrap());
+    assert_eq!(pinned, Point2D::new(0.0, 0.0), "the pinned node moved");
+    assert!(
+        (across - pinned).length() > 100.0,
+        "opposite nodes of the ring {:?} apart",
+        across - pinned
+    );
+}

@@ -145,6 +145,42 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
         extras: LayoutExtras<N>,
         frame_time: Duration,
     ) -> Self {
+        #[cfg(feature = "parallel")]
+        let threads = std::thread::available_parallelism().map_or(1, |n| n.get().max(2) - 1);
+        #[cfg(not(feature = "parallel"))]
+        let threads = 1;
+        Self::start(scene, config, extras, frame_time, threads)
+    }
+
+    /// [`spawn_with`](Self::spawn_with) on a rayon pool of `threads` threads of the
+    /// worker's own (at least 1), for the layout's parallel forces and rapier's solver.
+    /// [`spawn`](Self::spawn) and `spawn_with` take one thread fewer than the machine
+    /// has cores, so the host's UI thread keeps a core. The positions are the same bits
+    /// on any thread count for layouts whose contacts are the layout's own
+    /// ([`force_directed`](RapierLayoutConfig::force_directed),
+    /// [`stress`](RapierLayoutConfig::stress)).
+    ///
+    /// # Panics
+    /// If the operating system cannot start a thread (a pool that cannot be built falls
+    /// back to rayon's global pool).
+    #[cfg(feature = "parallel")]
+    pub fn spawn_on_threads(
+        scene: CanvasSceneInput<N>,
+        config: RapierLayoutConfig,
+        extras: LayoutExtras<N>,
+        frame_time: Duration,
+        threads: usize,
+    ) -> Self {
+        Self::start(scene, config, extras, frame_time, threads.max(1))
+    }
+
+    fn start(
+        scene: CanvasSceneInput<N>,
+        config: RapierLayoutConfig,
+        extras: LayoutExtras<N>,
+        frame_time: Duration,
+        threads: usize,
+    ) -> Self {
         let frame_time = frame_time.clamp(Duration::from_millis(1), Duration::from_secs(1));
         let (commands, receiver) = channel();
         let slot: Slot<N> = Arc::new(Mutex::new(None));
@@ -159,7 +195,7 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
         );
         let thread = std::thread::Builder::new()
             .name("graph-canvas-layout".into())
-            .spawn(move || worker.run())
+            .spawn(move || run_on(worker, threads))
             .expect("a layout worker thread");
         Self {
             commands: Some(commands),
@@ -344,4 +380,19 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static + std::fmt::Debug> std::fmt::D
             .field("converged", &self.latest.converged)
             .finish_non_exhaustive()
     }
+}
+
+/// Runs `worker` on a rayon pool of `threads` threads of its own under `parallel`.
+#[cfg(feature = "parallel")]
+fn run_on<N: Clone + Eq + Hash + Send + Sync + 'static>(worker: Worker<N>, threads: usize) {
+    match rayon::ThreadPoolBuilder::new().num_threads(threads).build() {
+        Ok(pool) => pool.install(|| worker.run()),
+        Err(_) => worker.run(),
+    }
+}
+
+/// Runs `worker` on its thread (no pool without `parallel`).
+#[cfg(not(feature = "parallel"))]
+fn run_on<N: Clone + Eq + Hash + Send + Sync + 'static>(worker: Worker<N>, _threads: usize) {
+    worker.run()
 }

@@ -120,12 +120,12 @@ impl Grid {
                 }
             }
             // The three cells of the next row.
-            let first = k + (1 << 32) - 1;
-            while below < cells.len() && cells[below].0 < first {
+            let next_row = k + (1 << 32) - 1;
+            while below < cells.len() && cells[below].0 < next_row {
                 below += 1;
             }
             for (j, &(k2, _)) in cells.iter().enumerate().skip(below) {
-                if k2 > first + 2 {
+                if k2 > next_row + 2 {
                     break;
                 }
                 if !pair(i as u32, j as u32) {

@@ -304,7 +304,7 @@ impl Collide {
         let budget = PAIRS_PER_BODY * points.len() + PAIRS_AT_LEAST;
         let bodies = grid.len();
         runs.resize_with(bodies.div_ceil(RUN), Default::default);
-        let complete = {
+        {
             let grid: &Grid = grid;
             let mut jobs: Vec<_> = runs.iter_mut().enumerate().collect();
             parallel::for_each(
@@ -322,20 +322,27 @@ impl Collide {
                     });
                 },
             );
-            jobs.iter().all(|(_, found)| found.complete)
-        };
+        }
+        // The runs' pairs in order up to the budget. A run that reached its own bound (a
+        // crowd far denser than disks can be: thousands of nodes added at one point,
+        // contacts from a hot scatter's first frame) is searched again from its start,
+        // in order, for what the budget keeps; the rest wait for a later substep.
         pairs.clear();
         extra.clear();
-        if complete {
-            for found in runs.iter() {
-                pairs.extend_from_slice(&found.pairs);
+        let mut resume = None;
+        for (r, found) in runs.iter().enumerate() {
+            if pairs.len() >= budget {
+                break;
             }
-            pairs.truncate(budget);
-        } else {
-            // A crowd far denser than disks can be (thousands of nodes added at one
-            // point, contacts from a hot scatter's first frame): the pairs found in
-            // order up to the budget are solved, the rest wait for a later substep.
-            grid.near_pairs(0..bodies, |a, b| {
+            if !found.complete {
+                resume = Some(r * RUN);
+                break;
+            }
+            pairs.extend_from_slice(&found.pairs);
+        }
+        pairs.truncate(budget);
+        if let Some(start) = resume {
+            grid.near_pairs(start..bodies, |a, b| {
                 pairs.extend(test.pair(a, b));
                 pairs.len() < budget
             });

@@ -226,3 +226,81 @@ fn a_crowd_denser_than_disks_keeps_to_the_budget() {
         "rows count every pair kept"
     );
 }
+
+/// The pairs one search of the whole grid finds in order, up to the budget, as a
+/// single thread found them before the search was cut into runs.
+fn searched_in_one_run(collide: &Collide) -> Vec<(u32, u32)> {
+    let test = Candidates {
+        points: &collide.points,
+        radius: &collide.radius,
+        half: &collide.half,
+        inner: &collide.inner,
+        round: &collide.round,
+        boxes: collide.boxes,
+        inverse_mass: &collide.inverse_mass,
+        motion: &collide.motion,
+        order: &collide.order,
+        slack: collide.grid.usual_motion(),
+        margin: 0.0,
+    };
+    let budget = PAIRS_PER_BODY * collide.points.len() + PAIRS_AT_LEAST;
+    let mut pairs = Vec::new();
+    collide.grid.near_pairs(0..collide.grid.len(), |a, b| {
+        pairs.extend(test.pair(a, b).map(|p| (p.a, p.b)));
+        pairs.len() < budget
+    });
+    pairs
+}
+
+/// Four runs of the search over crowds from loose to far denser than disks can be,
+/// and one half loose, half at one point: the runs' pairs joined in order are the
+/// pairs one search of the whole grid keeps, whether every run ends within its bound
+/// and the joined pairs pass the budget, or a run reaches its bound and the search
+/// goes on from it.
+#[test]
+fn runs_of_the_search_keep_the_pairs_one_search_keeps() {
+    let n = 4 * RUN;
+    let budget = PAIRS_PER_BODY * n + PAIRS_AT_LEAST;
+    let (mut over_budget_complete, mut resumed) = (0, 0);
+    let sides = (0..=30).map(|k| 380.0 + 5.0 * k as f32);
+    for (case, side) in sides.map(Some).chain([None]).enumerate() {
+        let mut next = sequence(11 + case as u64);
+        let points: Vec<_> = (0..n)
+            .map(|i| match side {
+                Some(side) => Point2D::new(next() * side, next() * side),
+                None if i % 2 == 0 => Point2D::new(next() * 3_000.0, next() * 3_000.0),
+                None => Point2D::new(1_500.0 + next(), 1_500.0 + next()),
+            })
+            .collect();
+        let mut collide = Collide::default();
+        for _ in 0..n {
+            collide.by_slot.radius.push(16.0);
+            collide.by_slot.inverse_mass.push(1.0);
+            collide.by_slot.velocity.push(Vector2D::zero());
+            collide.by_slot.motion.push(Vector2D::zero());
+            collide.by_slot.sleeping.push(false);
+        }
+        collide.take_in_grid_order(&points);
+        collide.find_pairs(0.0);
+        let found: Vec<(u32, u32)> = collide.pairs.iter().map(|p| (p.a, p.b)).collect();
+        let expected = searched_in_one_run(&collide);
+        let all_complete = collide.runs.iter().all(|r| r.complete);
+        let joined: usize = collide.runs.iter().map(|r| r.pairs.len()).sum();
+        over_budget_complete += usize::from(all_complete && joined > budget);
+        resumed += usize::from(collide.runs.iter().skip(1).any(|r| !r.complete));
+        let differ = found.iter().zip(&expected).position(|(f, e)| f != e);
+        assert!(
+            found.len() == expected.len() && differ.is_none(),
+            "case {case} (side {side:?}): {} pairs against one search's {}, first \
+             difference at {differ:?}; runs complete {all_complete}, joined {joined}, \
+             budget {budget}",
+            found.len(),
+            expected.len()
+        );
+    }
+    assert!(
+        over_budget_complete > 0 && resumed > 0,
+        "the crowds tested {over_budget_complete} searches whose complete runs passed the \
+         budget and {resumed} that went on from a run after the first"
+    );
+}

@@ -123,6 +123,8 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
         }
         let was_dragging = sync.dragging;
         let desired = desired_type(policy, m.valid, m.pinned, dragging);
+        // Its anchor and what the host was told change below: its delta is read again.
+        self.world.mark_changed(s);
         // NOTE: read first: a mutable access marks the body as modified for rapier,
         // which then re-processes it (and may wake it) at the next step.
         let body = self.world.body_at(s);

@@ -4,12 +4,13 @@
 
 use std::hash::Hash;
 
-use euclid::default::Point2D;
+use euclid::default::{Point2D, Vector2D};
 
-use super::matching::NO_SLOT;
+use super::matching::{Matching, NO_SLOT};
 use super::RapierLayout;
 use crate::input::scene::CanvasSceneInput;
 use crate::layout::{DeltaMap, IdHasher};
+use crate::world::RapierSceneWorld;
 
 /// What one call reports.
 #[derive(Debug)]
@@ -45,33 +46,116 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         if awake_before == 0 && world.awake_body_count() == 0 {
             return report;
         }
-        let mut max_speed_sq: f32 = 0.0;
-        for (node, m) in scene.nodes.iter().zip(self.matching.matches()) {
-            if m.slot == NO_SLOT {
-                continue;
+        // The bodies that may have moved since the last call: those the world reports
+        // changed (a few dozen on a settled graph disturbed in one place), or all.
+        let moved = match world.changed_slots() {
+            Some(changed) => {
+                let mut slots = changed.to_vec();
+                slots.sort_unstable();
+                Moved::of(world, slots.iter().map(|&s| s as usize), epsilon_sq)
             }
-            let s = m.slot as usize;
+            None => Moved::of(world, matched_slots(scene, &self.matching), epsilon_sq),
+        };
+        #[cfg(debug_assertions)]
+        if world.changed_slots().is_some() {
+            let every = Moved::of(world, matched_slots(scene, &self.matching), epsilon_sq);
+            moved.check_against(every);
+        }
+        report.awake = moved.awake;
+        let max_speed_sq = moved.max_speed_sq;
+        // Told positions the host's f32 addition does not land on the body's exactly are
+        // read again next call, when the world no longer reports them changed.
+        let mut inexact = Vec::new();
+        for &(s, delta) in &moved.deltas {
+            let s = s as usize;
+            let told = world.anchor_at(s) + delta;
+            // The host adds the delta with the same f32 addition.
+            world.host_at_mut(s).told = told;
+            if told != world.position_at(s) {
+                inexact.push(s);
+            }
+            if report.deltas.capacity() == 0 {
+                report.deltas.reserve(scene.nodes.len());
+            }
+            report.deltas.insert(world.id_at(s).clone(), delta);
+        }
+        self.forces.catch_up(world);
+        world.forget_changes();
+        for s in inexact {
+            world.mark_changed(s);
+        }
+        report.max_speed = max_speed_sq.sqrt();
+        report
+    }
+}
+
+/// The world slot of every node the scene matched, in the scene's order.
+fn matched_slots<'a, N: Clone + Eq + Hash>(
+    scene: &'a CanvasSceneInput<N>,
+    matching: &'a Matching<N>,
+) -> impl Iterator<Item = usize> + 'a {
+    scene
+        .nodes
+        .iter()
+        .zip(matching.matches())
+        .filter(|(_, m)| m.slot != NO_SLOT)
+        .map(|(_, m)| m.slot as usize)
+}
+
+/// What the dynamic bodies in some slots did since the host was last told.
+#[derive(Debug)]
+struct Moved {
+    /// Each body that moved more than the delta epsilon, with its displacement.
+    deltas: Vec<(u32, Vector2D<f32>)>,
+    /// The fastest awake body's speed, squared.
+    max_speed_sq: f32,
+    /// How many were awake.
+    awake: usize,
+}
+
+impl Moved {
+    fn of<N: Clone + Eq + Hash>(
+        world: &RapierSceneWorld<N>,
+        slots: impl Iterator<Item = usize>,
+        epsilon_sq: f32,
+    ) -> Self {
+        let mut moved = Self {
+            deltas: Vec::new(),
+            max_speed_sq: 0.0,
+            awake: 0,
+        };
+        for s in slots {
             let body = world.body_at(s);
             if !body.is_dynamic() {
                 continue;
             }
             if !body.is_sleeping() {
-                max_speed_sq = max_speed_sq.max(body.linvel().length_squared());
-                report.awake += 1;
+                moved.max_speed_sq = moved.max_speed_sq.max(body.linvel().length_squared());
+                moved.awake += 1;
             }
             let t = body.translation();
-            let anchor = world.anchor_at(s);
-            let delta = Point2D::new(t.x, t.y) - anchor;
+            let delta = Point2D::new(t.x, t.y) - world.anchor_at(s);
             if delta.square_length() > epsilon_sq && delta.is_finite() {
-                // The host adds the delta with the same f32 addition.
-                world.host_at_mut(s).told = anchor + delta;
-                if report.deltas.capacity() == 0 {
-                    report.deltas.reserve(scene.nodes.len());
-                }
-                report.deltas.insert(node.id.clone(), delta);
+                moved.deltas.push((s as u32, delta));
             }
         }
-        report.max_speed = max_speed_sq.sqrt();
-        report
+        moved
+    }
+
+    /// Debug builds (the tests): the changed bodies report what every body does.
+    #[cfg(debug_assertions)]
+    fn check_against(&self, mut every: Self) {
+        every.deltas.sort_unstable_by_key(|&(s, _)| s);
+        let bits = |m: &Self| -> Vec<(u32, u32, u32)> {
+            m.deltas
+                .iter()
+                .map(|&(s, d)| (s, d.x.to_bits(), d.y.to_bits()))
+                .collect()
+        };
+        assert_eq!(
+            (bits(self), self.awake, self.max_speed_sq.to_bits()),
+            (bits(&every), every.awake, every.max_speed_sq.to_bits()),
+            "the changed bodies' deltas, awake count and top speed against every body's"
+        );
     }
 }

@@ -33,6 +33,7 @@ use crate::config::{ContactSoftness, RapierLayoutConfig};
 use crate::world::RapierSceneWorld;
 
 pub(crate) mod barnes_hut;
+mod bodies;
 mod center;
 pub(crate) mod collide;
 mod group;
@@ -44,6 +45,7 @@ mod springs;
 pub(crate) mod stress;
 pub(crate) mod targets;
 
+pub(crate) use bodies::Bodies;
 use targets::NodeTargets;
 
 /// What a force reads on one substep.
@@ -64,48 +66,6 @@ pub(crate) struct ForceContext<'a, N> {
     pub(crate) dt: f32,
     /// The host's per-node forces, by world slot.
     pub(crate) targets: &'a NodeTargets,
-}
-
-/// What one substep reads of every body, by world slot, gathered once.
-#[derive(Debug, Default)]
-pub(crate) struct Bodies {
-    pub(crate) points: Vec<Point2D<f32>>,
-    /// Velocities; after the forces, what they will be from them (pushed bodies).
-    pub(crate) velocities: Vec<Vector2D<f32>>,
-    /// Dynamic and awake: pushed by the forces, and gives way in contacts.
-    pub(crate) pushed: Vec<bool>,
-    /// Where a kinematic body is driven to this substep (its position otherwise).
-    pub(crate) next: Vec<Point2D<f32>>,
-    /// Dynamic but asleep: does not give way until woken.
-    pub(crate) sleeping: Vec<bool>,
-}
-
-impl Bodies {
-    /// Reads every body once.
-    fn gather<N: Clone + Eq + Hash>(&mut self, world: &RapierSceneWorld<N>) {
-        let n = world.slot_count();
-        self.points.clear();
-        self.velocities.clear();
-        self.pushed.clear();
-        self.next.clear();
-        self.sleeping.clear();
-        for s in 0..n {
-            let body = world.body_at(s);
-            let (t, v) = (body.translation(), body.linvel());
-            let p = Point2D::new(t.x, t.y);
-            self.points.push(p);
-            self.velocities.push(Vector2D::new(v.x, v.y));
-            let dynamic = body.is_dynamic();
-            self.pushed.push(dynamic && !body.is_sleeping());
-            self.sleeping.push(dynamic && body.is_sleeping());
-            self.next.push(if body.is_kinematic() {
-                let next = body.next_position().translation;
-                Point2D::new(next.x, next.y)
-            } else {
-                p
-            });
-        }
-    }
 }
 
 /// How the forces on a node scale with its own heat after a local disturbance
@@ -292,6 +252,12 @@ impl<N: Clone + Eq + Hash> Forces<N> {
                 .any(|force| force.is_active(config, &self.targets))
     }
 
+    /// Before the world forgets its changes (`sync_out`): reads the changed bodies into
+    /// what the forces keep of every body.
+    pub(crate) fn catch_up(&mut self, world: &RapierSceneWorld<N>) {
+        self.bodies.catch_up(world);
+    }
+
     /// Clears the forces the last substeps left on bodies, once, after the last active
     /// force went away (a host's last pull removed, a configuration without forces):
     /// without it a body would keep being pushed by a force nobody applies.
@@ -310,6 +276,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
     /// Forgets every force's cache (the world was dropped or built anew).
     pub(crate) fn reset(&mut self) {
         self.targets = NodeTargets::default();
+        self.bodies.forget();
         self.applied = false;
         for force in &mut self.list {
             force.reset();
@@ -424,6 +391,8 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             return;
         }
         self.bodies.gather(world);
+        // The buffers now differ from rapier's state: the next gather reads every body.
+        self.bodies.forget();
         for (s, pushed) in self.bodies.pushed.iter_mut().enumerate() {
             *pushed = world.body_at(s).is_dynamic();
         }

@@ -133,6 +133,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
                     body.wake_up(true);
                     woken += 1;
                     self.touched = true;
+                    self.mark_changed(s);
                 }
             }
         }

@@ -77,6 +77,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         if let Some(slot) = self.slot_of(node) {
             if position.is_finite() {
                 self.slots[slot].anchor = position;
+                self.mark_changed(slot);
             }
         }
     }

@@ -33,6 +33,7 @@ use crate::layout::IdHasher;
 mod activity;
 pub(crate) mod bindings;
 mod bodies;
+mod changes;
 mod edges;
 pub(crate) mod events;
 pub(crate) mod nodes;
@@ -150,6 +151,8 @@ pub struct RapierSceneWorld<N> {
     spring_forces: bool,
     /// A body was inserted or accessed to change since the last step.
     touched: bool,
+    /// The bodies that may have changed since the layout last read them.
+    changes: changes::Changes,
     /// The next step runs without CCD (see [`RapierSceneWorld::step`]).
     ccd_off_once: bool,
     /// Whether colliders take part in the simulation (see
@@ -236,6 +239,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             contacts_enabled: true,
             spring_forces: false,
             touched: false,
+            changes: changes::Changes::default(),
             ccd_off_once: false,
             hop_length: None,
         }
@@ -300,6 +304,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     fn body_mut(&mut self, node: &N) -> Option<&mut RigidBody> {
         let slot = self.slot_of(node)?;
         self.touched = true;
+        self.mark_changed(slot);
         self.bodies.get_mut(self.slots[slot].body)
     }
 
@@ -309,6 +314,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     pub(crate) fn body_at_mut(&mut self, slot: usize) -> &mut RigidBody {
         self.touched = true;
+        self.mark_changed(slot);
         &mut self.bodies[self.slots[slot].body]
     }
 

@@ -103,6 +103,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         self.next_serial += 1;
         self.version += 1;
         self.touched = true;
+        self.changes.mark_all();
         true
     }
 
@@ -113,6 +114,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             return false;
         };
         self.version += 1;
+        self.changes.mark_all();
         let slot_index = slot_index as usize;
         let removed = self.slots.swap_remove(slot_index);
         let serial = removed.serial;
@@ -158,6 +160,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             collider.set_shape(shared_shape(shape));
         }
         self.bodies[s.body].set_additional_mass(mass, true);
+        self.changes.mark(slot, self.slots.len());
     }
 
     /// Gives a node a mass of its own in place (the layout's boxes weigh what a default
@@ -171,6 +174,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         self.version += 1;
         s.mass = mass;
         self.bodies[s.body].set_additional_mass(mass, true);
+        self.changes.mark(slot, self.slots.len());
     }
 }
 

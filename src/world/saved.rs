@@ -185,6 +185,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             version: saved.version,
             spring_forces: saved.spring_forces,
             touched: saved.touched,
+            changes: Default::default(),
             ccd_off_once: saved.ccd_off_once,
             contacts_enabled: saved.contacts_enabled,
             hop_length: saved.hop_length,

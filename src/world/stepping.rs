@@ -61,6 +61,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// ```
     pub fn step(&mut self, gravity: Vector2D<f32>) {
         let gravity = Vector::new(finite_or(gravity.x, 0.0), finite_or(gravity.y, 0.0));
+        // Every body the step can move: awake before it, or after it.
+        self.mark_active();
         let events: &dyn rapier2d::pipeline::EventHandler = match &self.collector {
             Some(collector) => collector,
             None => &(),
@@ -94,6 +96,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             events,
         );
         self.touched = false;
+        self.mark_active();
         self.recover_quarantined();
         self.collect_events();
     }

@@ -1,0 +1,123 @@
+//! What one substep reads of every body, by world slot: read from rapier once, then
+//! kept, and read again only for the bodies the world reports changed
+//! (`world/changes.rs`). On a settled 100,000-node graph a drag changes a few dozen
+//! bodies a step, and reading every body from rapier each substep was a fifth of the
+//! step.
+
+use std::hash::Hash;
+
+use euclid::default::{Point2D, Vector2D};
+use rapier2d::prelude::RigidBody;
+
+use crate::world::RapierSceneWorld;
+
+/// Every body's state a substep reads, by world slot.
+#[derive(Debug, Default)]
+pub(crate) struct Bodies {
+    pub(crate) points: Vec<Point2D<f32>>,
+    /// Velocities; after the forces, what they will be from them (pushed bodies).
+    pub(crate) velocities: Vec<Vector2D<f32>>,
+    /// Dynamic and awake: pushed by the forces, and gives way in contacts.
+    pub(crate) pushed: Vec<bool>,
+    /// Where a kinematic body is driven to this substep (its position otherwise).
+    pub(crate) next: Vec<Point2D<f32>>,
+    /// Dynamic but asleep: does not give way until woken.
+    pub(crate) sleeping: Vec<bool>,
+    /// Whether every slot holds what rapier held when the world's changes were last
+    /// forgotten, apart from the changed slots.
+    kept: bool,
+}
+
+impl Bodies {
+    /// Reads every body the world reports changed, or every body when it cannot say
+    /// or nothing is kept.
+    pub(crate) fn gather<N: Clone + Eq + Hash>(&mut self, world: &RapierSceneWorld<N>) {
+        let n = world.slot_count();
+        match world.changed_slots() {
+            Some(changed) if self.kept && self.points.len() == n => {
+                for &s in changed {
+                    self.read(s as usize, world.body_at(s as usize));
+                }
+            }
+            _ => self.read_all(world),
+        }
+        #[cfg(debug_assertions)]
+        self.check(world);
+    }
+
+    /// Before the world forgets its changes: reads the changed bodies, so what is kept
+    /// stays what rapier holds.
+    pub(crate) fn catch_up<N: Clone + Eq + Hash>(&mut self, world: &RapierSceneWorld<N>) {
+        match world.changed_slots() {
+            Some(changed) if self.kept && self.points.len() == world.slot_count() => {
+                for &s in changed {
+                    self.read(s as usize, world.body_at(s as usize));
+                }
+            }
+            _ => self.kept = false,
+        }
+    }
+
+    /// Forgets what is kept: the next gather reads every body (after a caller changed
+    /// the buffers, or for another world).
+    pub(crate) fn forget(&mut self) {
+        self.kept = false;
+    }
+
+    fn read_all<N: Clone + Eq + Hash>(&mut self, world: &RapierSceneWorld<N>) {
+        let n = world.slot_count();
+        self.points.clear();
+        self.velocities.clear();
+        self.pushed.clear();
+        self.next.clear();
+        self.sleeping.clear();
+        self.points.resize(n, Point2D::origin());
+        self.velocities.resize(n, Vector2D::zero());
+        self.pushed.resize(n, false);
+        self.next.resize(n, Point2D::origin());
+        self.sleeping.resize(n, false);
+        for s in 0..n {
+            self.read(s, world.body_at(s));
+        }
+        self.kept = true;
+    }
+
+    #[inline]
+    fn read(&mut self, s: usize, body: &RigidBody) {
+        let (t, v) = (body.translation(), body.linvel());
+        let p = Point2D::new(t.x, t.y);
+        self.points[s] = p;
+        self.velocities[s] = Vector2D::new(v.x, v.y);
+        let dynamic = body.is_dynamic();
+        self.pushed[s] = dynamic && !body.is_sleeping();
+        self.sleeping[s] = dynamic && body.is_sleeping();
+        self.next[s] = if body.is_kinematic() {
+            let next = body.next_position().translation;
+            Point2D::new(next.x, next.y)
+        } else {
+            p
+        };
+    }
+
+    /// Debug builds (the tests): what is kept is what reading every body gives.
+    #[cfg(debug_assertions)]
+    fn check<N: Clone + Eq + Hash>(&self, world: &RapierSceneWorld<N>) {
+        let mut all = Self::default();
+        all.read_all(world);
+        let point = |p: Point2D<f32>| [p.x.to_bits(), p.y.to_bits()];
+        let vector = |v: Vector2D<f32>| [v.x.to_bits(), v.y.to_bits()];
+        let stale = (0..all.points.len().min(self.points.len())).find(|&s| {
+            point(self.points[s]) != point(all.points[s])
+                || vector(self.velocities[s]) != vector(all.velocities[s])
+                || point(self.next[s]) != point(all.next[s])
+                || self.pushed[s] != all.pushed[s]
+                || self.sleeping[s] != all.sleeping[s]
+        });
+        assert!(
+            stale.is_none() && self.points.len() == all.points.len(),
+            "the kept state of the body in slot {stale:?} is not rapier's ({} kept, {} bodies)",
+            self.points.len(),
+            all.points.len()
+        );
+    }
+}

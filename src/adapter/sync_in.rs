@@ -52,6 +52,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             sweeps: 0,
             disturbances: &mut self.disturbances,
             flights: &mut self.flights,
+            kept: self.forces.kept_bodies(),
         };
         let check_drags = !extras.dragging.is_empty();
         let mut disturbed = false;
@@ -94,6 +95,8 @@ struct SyncPass<'a, N> {
     disturbances: &'a mut Disturbances,
     /// Thrown nodes in flight.
     flights: &'a mut Vec<Flight<N>>,
+    /// What the forces keep of every body's position and sleep (`forces/bodies.rs`).
+    kept: Option<(&'a [Point2D<f32>], &'a [bool])>,
 }
 
 impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
@@ -224,7 +227,7 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
     fn wake_in_path(&mut self, s: usize, from: Point2D<f32>, to: Point2D<f32>) {
         self.sweeps += 1;
         if self.sweeps <= MAX_SWEEPS {
-            self.world.wake_bodies_near_sweep(s, from, to);
+            self.world.wake_bodies_near_sweep(s, from, to, self.kept);
         } else if self.sweeps == MAX_SWEEPS + 1 {
             self.world.wake_dynamic_bodies();
         }

@@ -58,6 +58,12 @@ impl Bodies {
         }
     }
 
+    /// Every body's position and whether it is a sleeping dynamic body, when kept
+    /// (exact for every body the world has not reported changed since).
+    pub(crate) fn kept(&self) -> Option<(&[Point2D<f32>], &[bool])> {
+        self.kept.then_some((&self.points, &self.sleeping))
+    }
+
     /// Forgets what is kept: the next gather reads every body (after a caller changed
     /// the buffers, or for another world).
     pub(crate) fn forget(&mut self) {

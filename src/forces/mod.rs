@@ -252,6 +252,12 @@ impl<N: Clone + Eq + Hash> Forces<N> {
                 .any(|force| force.is_active(config, &self.targets))
     }
 
+    /// What the forces keep of every body's position and sleep, if anything
+    /// ([`Bodies::kept`]).
+    pub(crate) fn kept_bodies(&self) -> Option<(&[Point2D<f32>], &[bool])> {
+        self.bodies.kept()
+    }
+
     /// Before the world forgets its changes (`sync_out`): reads the changed bodies into
     /// what the forces keep of every body.
     pub(crate) fn catch_up(&mut self, world: &RapierSceneWorld<N>) {
@@ -277,6 +283,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
     pub(crate) fn reset(&mut self) {
         self.targets = NodeTargets::default();
         self.bodies.forget();
+        self.collide.forget_shapes();
         self.applied = false;
         for force in &mut self.list {
             force.reset();

@@ -45,7 +45,17 @@ pub(crate) struct SpringForce {
     version: Option<u64>,
     links: Vec<Link>,
     degrees: Vec<u32>,
+    /// Each slot's links, by index into `links` in ascending order: slot `s`'s are
+    /// `incident[starts[s]..starts[s + 1]]`.
+    starts: Vec<u32>,
+    incident: Vec<u32>,
+    /// The links a substep with few pushed bodies visits, in ascending order.
+    visit: Vec<u32>,
 }
+
+/// Below one pushed body in this many, a substep visits only the pushed bodies' links
+/// (in the order of all links, so every sum is the same) instead of checking every link.
+const FEW_PUSHED: usize = 16;
 
 impl<N: Clone + Eq + Hash> BodyForce<N> for SpringForce {
     fn is_active(&self, config: &RapierLayoutConfig, _: &NodeTargets) -> bool {
@@ -62,47 +72,31 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for SpringForce {
         if self.version != Some(frame.world.version()) {
             self.rebuild(frame.world);
         }
-        let scale = frame.world.applied_spring_scale();
-        let dt = frame.dt;
-        for link in &self.links {
-            let (a, b) = (link.a as usize, link.b as usize);
-            let (Some(&pa), Some(&pb)) = (frame.points.get(a), frame.points.get(b)) else {
-                continue;
-            };
-            if !(frame.pushed[a] || frame.pushed[b]) {
-                // Neither end moves this substep (asleep, held or fixed), and only the
-                // pushed bodies' sums are read: a resting graph's springs cost a check.
-                continue;
+        let pull = Pull {
+            scale: frame.world.applied_spring_scale(),
+            gain,
+            as_forces,
+        };
+        let pushed = frame.pushed;
+        let few = pushed.iter().filter(|&&p| p).count() * FEW_PUSHED < pushed.len();
+        if few && self.starts.len() == pushed.len() + 1 {
+            // A settled graph disturbed in one place: the pushed bodies' links, each
+            // once, in the order of all links.
+            self.visit.clear();
+            for (s, _) in pushed.iter().enumerate().filter(|(_, &p)| p) {
+                let (from, to) = (self.starts[s] as usize, self.starts[s + 1] as usize);
+                self.visit.extend_from_slice(&self.incident[from..to]);
             }
-            let d = pb - pa;
-            let length = d.length();
-            if !(length > 1e-3 && length.is_finite()) {
-                continue;
+            self.visit.sort_unstable();
+            self.visit.dedup();
+            #[cfg(debug_assertions)]
+            self.check_subset(&pull, frame);
+            for &k in &self.visit {
+                pull.apply(&self.links[k as usize], frame, out);
             }
-            let k = (link.stiffness * scale).min(link.cap);
-            if !as_forces {
-                // The joint pulls evenly: add the uneven part only.
-                let f = d * (gain * link.share * k * (length - link.rest_length) / length);
-                if f.is_finite() {
-                    out.springs[a] += f;
-                    out.springs[b] += f;
-                }
-                continue;
-            }
-            let direction = d / length;
-            let c = link.damping * scale;
-            let closing = (frame.velocities[b] - frame.velocities[a]).dot(direction);
-            let pull = k * (length - link.rest_length) + c * closing;
-            let resistance = dt * dt * k + dt * c;
-            for (end, toward, part) in [
-                (a, direction, 1.0 + gain * link.share),
-                (b, -direction, 1.0 - gain * link.share),
-            ] {
-                let f = toward * (pull * part);
-                if frame.pushed[end] && f.is_finite() {
-                    out.springs[end] += f;
-                    out.resistance[end] += resistance * part;
-                }
+        } else {
+            for link in &self.links {
+                pull.apply(link, frame, out);
             }
         }
     }
@@ -142,6 +136,113 @@ impl SpringForce {
             let db = self.degrees[link.b as usize] as f32;
             link.share = (db - da) / (da + db);
         }
+        // Each slot's links in ascending order (a counting sort by end).
+        let n = self.degrees.len();
+        self.starts.clear();
+        self.starts.push(0);
+        for s in 0..n {
+            self.starts.push(self.starts[s] + self.degrees[s]);
+        }
+        self.incident.clear();
+        self.incident.resize(self.links.len() * 2, 0);
+        let mut next: Vec<u32> = self.starts[..n].to_vec();
+        for (k, link) in self.links.iter().enumerate() {
+            for end in [link.a, link.b] {
+                self.incident[next[end as usize] as usize] = k as u32;
+                next[end as usize] += 1;
+            }
+        }
         self.version = Some(world.version());
+    }
+}
+
+impl SpringForce {
+    /// Debug builds (the tests): the pushed bodies' links give every sum that all
+    /// links give, bit for bit.
+    #[cfg(debug_assertions)]
+    fn check_subset<N>(&self, pull: &Pull, frame: &ForceContext<'_, N>) {
+        let sums = |links: &mut dyn Iterator<Item = &Link>| {
+            let n = frame.pushed.len();
+            let mut out = ForceSums {
+                springs: vec![euclid::default::Vector2D::zero(); n],
+                resistance: vec![0.0; n],
+                ..ForceSums::default()
+            };
+            for link in links {
+                pull.apply(link, frame, &mut out);
+            }
+            let bits: Vec<[u32; 3]> = (out.springs.iter().zip(&out.resistance))
+                .map(|(f, r)| [f.x.to_bits(), f.y.to_bits(), r.to_bits()])
+                .collect();
+            bits
+        };
+        let subset = sums(&mut self.visit.iter().map(|&k| &self.links[k as usize]));
+        let all = sums(&mut self.links.iter());
+        let differ = subset.iter().zip(&all).position(|(a, b)| a != b);
+        assert_eq!(
+            differ, None,
+            "slot whose spring sums differ from all links'"
+        );
+    }
+}
+
+/// What one substep's springs pull with, apart from the links.
+struct Pull {
+    scale: f32,
+    /// The link bias, clamped to 0..=1.
+    gain: f32,
+    /// Springs are forces of the layout's own (not rapier joints).
+    as_forces: bool,
+}
+
+impl Pull {
+    /// Adds `link`'s pull on its pushed ends to `out`.
+    #[inline]
+    fn apply<N>(&self, link: &Link, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
+        let Self {
+            scale,
+            gain,
+            as_forces,
+        } = *self;
+        let dt = frame.dt;
+        let (a, b) = (link.a as usize, link.b as usize);
+        let (Some(&pa), Some(&pb)) = (frame.points.get(a), frame.points.get(b)) else {
+            return;
+        };
+        if !(frame.pushed[a] || frame.pushed[b]) {
+            // Neither end moves this substep (asleep, held or fixed), and only the
+            // pushed bodies' sums are read: a resting graph's springs cost a check.
+            return;
+        }
+        let d = pb - pa;
+        let length = d.length();
+        if !(length > 1e-3 && length.is_finite()) {
+            return;
+        }
+        let k = (link.stiffness * scale).min(link.cap);
+        if !as_forces {
+            // The joint pulls evenly: add the uneven part only.
+            let f = d * (gain * link.share * k * (length - link.rest_length) / length);
+            if f.is_finite() {
+                out.springs[a] += f;
+                out.springs[b] += f;
+            }
+            return;
+        }
+        let direction = d / length;
+        let c = link.damping * scale;
+        let closing = (frame.velocities[b] - frame.velocities[a]).dot(direction);
+        let pull = k * (length - link.rest_length) + c * closing;
+        let resistance = dt * dt * k + dt * c;
+        for (end, toward, part) in [
+            (a, direction, 1.0 + gain * link.share),
+            (b, -direction, 1.0 - gain * link.share),
+        ] {
+            let f = toward * (pull * part);
+            if frame.pushed[end] && f.is_finite() {
+                out.springs[end] += f;
+                out.resistance[end] += resistance * part;
+            }
+        }
     }
 }

@@ -86,6 +86,12 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         self.changes.slots()
     }
 
+    /// Whether the body in `slot` may have changed since
+    /// [`forget_changes`](Self::forget_changes).
+    pub(crate) fn is_changed(&self, slot: usize) -> bool {
+        self.changes.all || self.changes.marked.get(slot).is_none_or(|&m| m)
+    }
+
     /// Forgets the changes: the caller has read every changed body.
     pub(crate) fn forget_changes(&mut self) {
         self.changes.clear(self.slots.len());
@@ -115,4 +121,39 @@ fn slot_of(bodies: &rapier2d::prelude::RigidBodySet, handle: RigidBodyHandle) ->
     bodies
         .get(handle)
         .map_or(usize::MAX, |body| body.user_data as usize)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A slot marked twice is reported once, in the order first marked; past one slot
+    /// in eight, or for a slot beyond the world's, every slot is; a new log and a
+    /// cleared one of every slot start over.
+    #[test]
+    fn the_log_reports_each_changed_slot_once_or_every_slot() {
+        let mut changes = Changes::default();
+        assert_eq!(changes.slots(), None, "a new world: every body is new");
+        changes.clear(64);
+        for s in [5, 3, 5, 9, 3] {
+            changes.mark(s, 64);
+        }
+        assert_eq!(changes.slots(), Some(&[5, 3, 9][..]));
+        for s in 10..15 {
+            changes.mark(s, 64);
+        }
+        assert_eq!(changes.slots().map(<[u32]>::len), Some(8), "8 of 64: kept");
+        changes.mark(40, 64);
+        assert_eq!(changes.slots(), None, "9 of 64: every slot");
+        changes.clear(64);
+        assert_eq!(changes.slots(), Some(&[][..]), "cleared");
+        changes.mark(3, 64);
+        assert_eq!(
+            changes.slots(),
+            Some(&[3][..]),
+            "marks cleared with the log"
+        );
+        changes.mark(64, 64);
+        assert_eq!(changes.slots(), None, "a slot the log was not sized for");
+    }
 }

@@ -208,6 +208,12 @@ impl Collide {
         self.last_version = version;
     }
 
+    /// Forgets the outlines read for a world version (a new world counts its versions
+    /// from 0 again).
+    pub(crate) fn forget_shapes(&mut self) {
+        self.by_slot.clear();
+    }
+
     /// The velocity change [`resolve`](Self::resolve) gives the body in slot `s`.
     pub(crate) fn change(&self, s: usize) -> Vector2D<f32> {
         let l = self.local.get(s).map_or(NONE, |&l| l) as usize;
@@ -287,15 +293,10 @@ impl Collide {
         dt: f32,
     ) {
         let by_slot = &mut self.by_slot;
-        by_slot.clear();
+        by_slot.clear_motion();
+        by_slot.read_shapes(world);
         by_slot.sleeping.extend_from_slice(&bodies.sleeping);
         for (s, &p) in bodies.points.iter().enumerate() {
-            let shape = world.shape_at(s);
-            let (inner, round) = shape.inner_and_round();
-            by_slot.radius.push(shape.bounding_radius());
-            by_slot.inner.push(inner);
-            by_slot.round.push(round);
-            by_slot.half.push(inner + Vector2D::new(round, round));
             let (inverse_mass, velocity) = if bodies.pushed[s] {
                 (1.0 / world.mass_at(s), bodies.velocities[s])
             } else {

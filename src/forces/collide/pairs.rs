@@ -7,12 +7,15 @@
 //! in memory (the same or a neighbouring cell): at 100,000 bodies the per-body arrays no
 //! longer fit a core's cache, and the passes run over every pair many times a substep.
 
+use std::hash::Hash;
+
 use euclid::default::{Point2D, Vector2D};
 
 use super::grid::Grid;
 use super::shapes::box_contact;
 use super::{coincident_normal, Collide, SLEEPING_OVERLAP};
 use crate::parallel;
+use crate::world::RapierSceneWorld;
 
 /// Whether two bodies `d` apart (from the first to the second) that move `relative` to
 /// each other over the substep, in a straight line, come within `within` of each other.
@@ -72,10 +75,45 @@ pub(super) struct BySlot {
     /// The displacement over the substep.
     pub(super) motion: Vec<Vector2D<f32>>,
     pub(super) sleeping: Vec<bool>,
+    /// The world version the outlines (`radius`, `inner`, `round`, `half`) were read
+    /// for: shapes change only with it.
+    shapes_of: Option<u64>,
 }
 
 impl BySlot {
+    /// Reads every body's outline, unless the world's version is the one they were
+    /// read for.
+    pub(super) fn read_shapes<N: Clone + Eq + Hash>(&mut self, world: &RapierSceneWorld<N>) {
+        let n = world.slot_count();
+        if self.shapes_of == Some(world.version()) && self.radius.len() == n {
+            return;
+        }
+        self.radius.clear();
+        self.inner.clear();
+        self.round.clear();
+        self.half.clear();
+        for s in 0..n {
+            let shape = world.shape_at(s);
+            let (inner, round) = shape.inner_and_round();
+            self.radius.push(shape.bounding_radius());
+            self.inner.push(inner);
+            self.round.push(round);
+            self.half.push(inner + Vector2D::new(round, round));
+        }
+        self.shapes_of = Some(world.version());
+    }
+
+    /// Clears what a substep brings (masses, velocities, motion, sleep), keeping the
+    /// outlines.
+    pub(super) fn clear_motion(&mut self) {
+        self.inverse_mass.clear();
+        self.velocity.clear();
+        self.motion.clear();
+        self.sleeping.clear();
+    }
+
     pub(super) fn clear(&mut self) {
+        self.shapes_of = None;
         self.radius.clear();
         self.inner.clear();
         self.round.clear();

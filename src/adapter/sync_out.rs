@@ -24,9 +24,10 @@ pub(super) struct FrameReport<N> {
 }
 
 impl<N: Clone + Eq + Hash> RapierLayout<N> {
-    /// Reads every dynamic body the scene names. `awake_before` is rapier's count of
-    /// simulated bodies before the step: when it was 0 and still is, nothing moved and
-    /// no body needs reading.
+    /// Reads the dynamic bodies that may have moved: those the world logged as changed,
+    /// or every body the scene names when it logged too many to say. `awake_before` is
+    /// rapier's count of simulated bodies before the step: when it was 0 and still is,
+    /// nothing moved and no body needs reading.
     pub(super) fn sync_out(
         &mut self,
         scene: &CanvasSceneInput<N>,
@@ -75,7 +76,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 inexact.push(s);
             }
             if report.deltas.capacity() == 0 {
-                report.deltas.reserve(scene.nodes.len());
+                report.deltas.reserve(moved.deltas.len());
             }
             report.deltas.insert(world.id_at(s).clone(), delta);
         }

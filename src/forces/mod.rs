@@ -342,8 +342,10 @@ impl<N: Clone + Eq + Hash> Forces<N> {
                 *f *= mass / (mass + resistance);
             }
             if !f.is_finite() {
-                // Left as it was: the body keeps the force it had.
+                // Left as it was: the body keeps the force it had. What is kept of it
+                // no longer matches rapier: read again at the next gather.
                 self.bodies.pushed[s] = false;
+                world.mark_changed(s);
             }
         }
         let separate = config.separates_disks() && world.contacts_enabled();
@@ -398,11 +400,12 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             return;
         }
         self.bodies.gather(world);
-        // The buffers now differ from rapier's state: the next gather reads every body.
-        self.bodies.forget();
-        for (s, pushed) in self.bodies.pushed.iter_mut().enumerate() {
-            *pushed = world.body_at(s).is_dynamic();
-        }
+        // Every dynamic body counts as pushed here; what is kept of rapier's state is
+        // put back after.
+        let mut dynamic: Vec<bool> = (0..world.slot_count())
+            .map(|s| world.body_at(s).is_dynamic())
+            .collect();
+        std::mem::swap(&mut self.bodies.pushed, &mut dynamic);
         // Every pivot term worked out afresh at the rest positions.
         self.stress.renew_pivot_terms();
         self.sum_forces(world, config, heat, dt, false);
@@ -412,6 +415,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             &self.sums.springs,
             &self.sums.forces,
         );
+        std::mem::swap(&mut self.bodies.pushed, &mut dynamic);
     }
 
     /// Clears the sums and adds every active force's pull on the bodies `self.bodies`

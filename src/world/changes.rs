@@ -1,8 +1,8 @@
 //! Which bodies may have changed since the layout last read them all: every body the
 //! world handed out to change, and every body rapier simulated in a step (awake before
 //! it or after it). A settled graph disturbed in one place changes a few dozen bodies
-//! a step; the layout reads those instead of all of them (`Bodies` in `forces/mod.rs`,
-//! the deltas in `adapter/sync_out.rs`).
+//! a step; the layout reads those instead of all of them (`forces/bodies.rs`, the
+//! deltas in `adapter/sync_out.rs`, a drag's sweep in `world/activity.rs`).
 
 use std::hash::Hash;
 

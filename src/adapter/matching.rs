@@ -40,6 +40,8 @@ pub(super) struct Matching<N> {
     pub(super) bad_nodes: usize,
     /// Repeated ids and bad edges in the scene the topology was last computed from.
     pub(super) topology_problems: usize,
+    /// The slots the last call gave a delta, in slot order (`known.rs`).
+    moved: Vec<u32>,
 }
 
 impl<N> Default for Matching<N> {
@@ -51,6 +53,7 @@ impl<N> Default for Matching<N> {
             edges: None,
             bad_nodes: 0,
             topology_problems: 0,
+            moved: Vec::new(),
         }
     }
 }
@@ -71,6 +74,21 @@ impl<N> Matching<N> {
 }
 
 impl<N: Clone + Eq + Hash> Matching<N> {
+    /// The slots the last call gave a delta.
+    pub(super) fn moved(&self) -> &[u32] {
+        &self.moved
+    }
+
+    /// Where the slots this call gives a delta are kept.
+    pub(super) fn moved_mut(&mut self) -> &mut Vec<u32> {
+        &mut self.moved
+    }
+
+    /// Whether the edges the topology was last computed from are known.
+    pub(super) fn knows_edges(&self) -> bool {
+        self.edges.is_some()
+    }
+
     /// This call's matches, by scene index.
     pub(super) fn matches(&self) -> &[NodeMatch] {
         &self.matches

@@ -38,6 +38,7 @@ mod disturbance;
 mod drag;
 mod edits;
 mod heat;
+mod known;
 mod matching;
 mod node_forces;
 mod reconfigure;
@@ -367,7 +368,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         extras: &LayoutExtras<N>,
     ) -> Result<DeltaMap<N>, LayoutError<N>> {
         validate(scene, extras)?;
-        Ok(self.advance(scene, state, dt, extras))
+        Ok(self.advance(scene, state, dt, extras, None))
     }
 }
 
@@ -397,7 +398,7 @@ impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
         _viewport: &CanvasViewport,
         extras: &LayoutExtras<N>,
     ) -> DeltaMap<N> {
-        self.advance(scene, state, dt, extras)
+        self.advance(scene, state, dt, extras, None)
     }
 
     /// True when the layout was at rest after the last call: a world exists, no dynamic body moved faster
@@ -419,12 +420,15 @@ impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
 
 // ── the stages of one call ────────────────────────────────────────────────────────────
 impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    /// One call; `known` lists the scene nodes a caller changed since the last call
+    /// (`known.rs`), `None` for a host's scene.
     fn advance(
         &mut self,
         scene: &CanvasSceneInput<N>,
         state: &mut RapierLayoutState,
         dt: f32,
         extras: &LayoutExtras<N>,
+        known: Option<&[usize]>,
     ) -> DeltaMap<N> {
         state.step_count = state.step_count.wrapping_add(1);
         if scene.nodes.is_empty() {
@@ -439,9 +443,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let reconfigured = self.apply_config_changes();
         let unfolding_before = self.heat.unfolding;
         let cold = self.builds_cold();
-        let mut disturbed = self.sync_topology(scene, extras);
+        // A caller's list stands for the matching only while nothing was reconfigured.
+        let known =
+            known.filter(|changed| !reconfigured && self.rematch_known(scene, extras, changed));
+        let mut disturbed = known.is_none() && self.sync_topology(scene, extras);
         // NOTE: every drive comes with a disturbance from `sync_in`.
-        disturbed |= self.sync_in(scene, extras, plan.frame_dt);
+        disturbed |= self.sync_in(scene, extras, plan.frame_dt, known);
         disturbed |= self.sync_node_forces(scene, extras);
         if cold {
             // NOTE: after the sync, which flips pinned bodies and reads the forces.

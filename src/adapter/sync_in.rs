@@ -33,17 +33,29 @@ const MAX_SWEEPS: usize = 16;
 
 impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// Returns whether the host disturbed the layout (drag, release, host move, pin
-    /// change, radius edit).
+    /// change, radius edit). With `known` (`known.rs`), only the listed scene nodes are
+    /// synced, and the nodes the last call moved take the positions they were told.
     pub(super) fn sync_in(
         &mut self,
         scene: &CanvasSceneInput<N>,
         extras: &LayoutExtras<N>,
         frame_dt: f32,
+        known: Option<&[usize]>,
     ) -> bool {
         self.drives.clear();
         let Some(world) = self.world.as_mut() else {
             return false;
         };
+        if known.is_some() {
+            for &s in self.matching.moved() {
+                // What the fast path below does for a free node the host moved by its
+                // delta: its anchor is where the host has it.
+                let (sync, anchor) = world.host_and_anchor_mut(s as usize);
+                if sync.synced {
+                    *anchor = sync.told;
+                }
+            }
+        }
         let mut pass = SyncPass {
             world,
             drives: &mut self.drives,
@@ -55,13 +67,34 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             kept: self.forces.kept_bodies(),
         };
         let check_drags = !extras.dragging.is_empty();
+        let matches = self.matching.matches();
         let mut disturbed = false;
-        for (node, &m) in scene.nodes.iter().zip(self.matching.matches()) {
-            if m.slot == NO_SLOT {
-                continue;
+        let mut sync = |node: &CanvasNode<N>, m: NodeMatch| {
+            if m.slot != NO_SLOT {
+                let dragging = m.valid && check_drags && extras.dragging.contains(&node.id);
+                disturbed |= pass.node(node, m, dragging);
             }
-            let dragging = m.valid && check_drags && extras.dragging.contains(&node.id);
-            disturbed |= pass.node(node, m, dragging);
+        };
+        match known {
+            None => {
+                for (node, &m) in scene.nodes.iter().zip(matches) {
+                    sync(node, m);
+                }
+            }
+            Some(listed) => {
+                for &i in listed {
+                    sync(&scene.nodes[i], matches[i]);
+                }
+                #[cfg(debug_assertions)]
+                super::known::check_unlisted(
+                    pass.world,
+                    &self.config,
+                    scene,
+                    extras,
+                    matches,
+                    listed,
+                );
+            }
         }
         disturbed
     }
@@ -235,7 +268,7 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
 }
 
 /// The body type a node should have this call; `None` for unusable values (frozen).
-fn desired_type(
+pub(super) fn desired_type(
     policy: BodyKindPolicy,
     valid: bool,
     pinned: bool,
@@ -261,8 +294,17 @@ fn sync_shape<N: Clone + Eq + Hash>(
     config: &RapierLayoutConfig,
     node: &CanvasNode<N>,
 ) -> bool {
-    let (current, wanted) = (world.shape_at(s), shape_of(config, node));
-    let same = match (current, wanted) {
+    let wanted = shape_of(config, node);
+    let same = same_spec(world.shape_at(s), wanted);
+    if !same {
+        world.set_shape_at(s, wanted, mass_of(config, wanted));
+    }
+    !same
+}
+
+/// Whether two collider specs are the same bit for bit.
+pub(super) fn same_spec(current: ColliderSpec, wanted: ColliderSpec) -> bool {
+    match (current, wanted) {
         (ColliderSpec::Circle { radius: a }, ColliderSpec::Circle { radius: b }) => {
             a.to_bits() == b.to_bits()
         }
@@ -280,11 +322,7 @@ fn sync_shape<N: Clone + Eq + Hash>(
             },
         ) => same_bits(a, b) && ca.to_bits() == cb.to_bits(),
         _ => false,
-    };
-    if !same {
-        world.set_shape_at(s, wanted, mass_of(config, wanted));
     }
-    !same
 }
 
 /// Whether two vectors are the same bit for bit.

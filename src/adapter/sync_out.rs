@@ -33,6 +33,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         scene: &CanvasSceneInput<N>,
         awake_before: usize,
     ) -> FrameReport<N> {
+        self.matching.moved_mut().clear();
         let epsilon = self.config.delta_epsilon.max(0.0);
         let epsilon_sq = epsilon * epsilon;
         // Allocated on the first delta: a resting layout returns an empty map for free.
@@ -79,6 +80,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 report.deltas.reserve(moved.deltas.len());
             }
             report.deltas.insert(world.id_at(s).clone(), delta);
+            self.matching.moved_mut().push(s as u32);
         }
         self.forces.catch_up(world);
         world.forget_changes();

@@ -1,8 +1,10 @@
 //! The worker's side of [`LayoutWorker`](super::LayoutWorker): the host's messages
-//! applied to the worker's own scene in the order they were sent, one
-//! [`Layout::step`] per frame (one frame of simulated time, no faster than real time),
-//! the newest positions published after each step, and a blocking wait while the
-//! layout rests.
+//! applied to the worker's own scene in the order they were sent, one step per frame
+//! (one frame of simulated time, no faster than real time), the newest positions
+//! published after each step, and a blocking wait while the layout rests. A step is
+//! told which nodes the messages changed (`adapter/known.rs`), so a drag on a settled
+//! graph does not match and sync every node; a message that changes more than nodes
+//! makes the next step a full [`Layout::step`].
 
 use std::hash::Hash;
 use std::sync::mpsc::{Receiver, RecvTimeoutError, TryRecvError};
@@ -50,6 +52,11 @@ pub(super) struct Worker<N> {
     index: Arc<NodeMap<N, usize>>,
     ids: Arc<Vec<N>>,
     nodes_changed: bool,
+    /// The scene indices of the nodes the host's messages changed since the last step,
+    /// and whether a message changed more than nodes (the node set, the edges, pins,
+    /// forces or the configuration): the step is then told nothing (`adapter/known.rs`).
+    changed: Vec<usize>,
+    restructured: bool,
     /// The sequence number of the last message applied.
     applied: u64,
     steps: u64,
@@ -76,6 +83,8 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
             index: Arc::default(),
             ids: Arc::default(),
             nodes_changed: true,
+            changed: Vec::new(),
+            restructured: true,
             applied: 0,
             steps: 0,
             step_times: Vec::new(),
@@ -130,15 +139,43 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
                 self.publish();
                 continue;
             }
-            let dt = self.frame_time;
-            let deltas = self.layout.step(
-                &self.scene,
-                &mut self.state,
-                dt.as_secs_f32(),
-                &CanvasViewport::default(),
-                &self.extras,
-            );
-            self.scene.apply_deltas(&deltas);
+            let dt = self.frame_time.as_secs_f32();
+            let deltas = if std::mem::take(&mut self.restructured) {
+                self.changed.clear();
+                self.layout.step(
+                    &self.scene,
+                    &mut self.state,
+                    dt,
+                    &CanvasViewport::default(),
+                    &self.extras,
+                )
+            } else {
+                // Every dragged and pinned node is listed with the changed ones.
+                self.reindex();
+                let index = &self.index;
+                let held = self.extras.dragging.iter().chain(&self.extras.pinned);
+                self.changed
+                    .extend(held.filter_map(|id| index.get(id).copied()));
+                self.changed.sort_unstable();
+                self.changed.dedup();
+                let deltas = self.layout.step_known(
+                    &self.scene,
+                    &mut self.state,
+                    dt,
+                    &self.extras,
+                    &self.changed,
+                );
+                self.changed.clear();
+                deltas
+            };
+            // Each delta to its node, found by id (the first node of an id, as
+            // `apply_deltas` does) rather than by a pass over every node.
+            self.reindex();
+            for (id, delta) in &deltas {
+                if let Some(&i) = self.index.get(id) {
+                    self.scene.nodes[i].position += *delta;
+                }
+            }
             self.steps += 1;
             self.step_times.push(started.elapsed());
             self.publish();
@@ -147,6 +184,18 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
 
     fn apply(&mut self, seq: u64, command: Command<N>) {
         self.applied = seq;
+        match &command {
+            Command::Move(id, _)
+            | Command::Drag(id, _)
+            | Command::Release(id)
+            | Command::Reshape(id, _, _) => {
+                self.reindex();
+                if let Some(&i) = self.index.get(id) {
+                    self.changed.push(i);
+                }
+            }
+            _ => self.restructured = true,
+        }
         match command {
             Command::AddNode(node) => {
                 self.scene.nodes.push(node);

@@ -140,6 +140,9 @@ pub(crate) struct Collide {
     /// By slot, the bodies this substep's separation takes (`region.rs`); empty for
     /// every body.
     region: Vec<bool>,
+    /// The moving bodies' slots and the cells they reach, as the region is marked.
+    moving: Vec<u32>,
+    hot: region::HotCells,
     inverse_mass: Vec<f32>,
     /// Each body's velocity during the solve, and what it was before.
     velocity: Vec<Vector2D<f32>>,

@@ -140,7 +140,8 @@ pub(crate) struct Collide {
     /// By slot, the bodies this substep's separation takes (`region.rs`); empty for
     /// every body.
     region: Vec<bool>,
-    /// The moving bodies' slots and the cells they reach, as the region is marked.
+    /// The slots of the bodies that give way or are driven (with a finite position), in
+    /// slot order, and the cells they reach as the region is marked.
     moving: Vec<u32>,
     hot: region::HotCells,
     inverse_mass: Vec<f32>,
@@ -299,6 +300,7 @@ impl Collide {
         by_slot.clear_motion();
         by_slot.read_shapes(world);
         by_slot.sleeping.extend_from_slice(&bodies.sleeping);
+        self.moving.clear();
         for (s, &p) in bodies.points.iter().enumerate() {
             let (inverse_mass, velocity) = if bodies.pushed[s] {
                 (1.0 / world.mass_at(s), bodies.velocities[s])
@@ -311,9 +313,13 @@ impl Collide {
             } else {
                 Vector2D::zero()
             };
+            let motion = velocity * dt;
+            if (inverse_mass > 0.0 || motion != Vector2D::zero()) && p.is_finite() {
+                self.moving.push(s as u32);
+            }
             by_slot.inverse_mass.push(inverse_mass);
             by_slot.velocity.push(velocity);
-            by_slot.motion.push(velocity * dt);
+            by_slot.motion.push(motion);
         }
     }
 

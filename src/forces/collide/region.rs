@@ -129,7 +129,11 @@ impl Collide {
         if n < REGION_AT_LEAST || by.half.len() < n {
             return;
         }
-        let moving = |s: usize| by.inverse_mass[s] > 0.0 || by.motion[s] != Vector2D::zero();
+        // The moving bodies (`prepare` lists them): too many, and the region would hold
+        // most bodies anyway.
+        if self.moving.len() * MOVING_SHARE > n {
+            return;
+        }
         // The swept bounding box, widened by the motion's length: the full search keeps
         // a pair within the bodies' reach and their relative motion.
         let swept = |s: usize| {
@@ -142,16 +146,8 @@ impl Collide {
             Point2D::new(f32::INFINITY, f32::INFINITY),
             Point2D::new(f32::NEG_INFINITY, f32::NEG_INFINITY),
         );
-        self.moving.clear();
-        for (s, p) in points.iter().enumerate() {
-            if !moving(s) || !p.is_finite() {
-                continue;
-            }
-            if (self.moving.len() + 1) * MOVING_SHARE > n {
-                return;
-            }
-            self.moving.push(s as u32);
-            let (from, to) = swept(s);
+        for &s in &self.moving {
+            let (from, to) = swept(s as usize);
             lo = lo.min(from);
             hi = hi.max(to);
         }
@@ -238,6 +234,9 @@ mod tests {
                     Vector2D::zero()
                 });
                 by.sleeping.push(!moves);
+                if moves {
+                    collide.moving.push(s as u32);
+                }
             }
             if region {
                 collide.mark_region(&points);

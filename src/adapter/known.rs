@@ -154,20 +154,21 @@ mod tests {
     }
 
     /// What the host does at frame `k`: drags node 5 over frames 30–40 and lets go, moves
-    /// node 9 at frame 60, makes node 11 a label box at frame 80; node 20 is pinned
-    /// throughout. Returns the scene indices it changed.
+    /// node 9 at frame 60, makes node 11 a label box at frame 80, and drags node 5 again
+    /// over frames 400–410, once the layout rests; node 20 is pinned throughout. Returns
+    /// the scene indices it changed.
     fn host_frame(
         k: usize,
         scene: &mut CanvasSceneInput<u32>,
         extras: &mut LayoutExtras<u32>,
     ) -> Vec<usize> {
         match k {
-            30..=40 => {
+            30..=40 | 400..=410 => {
                 extras.dragging.insert(5);
                 scene.nodes[5].position += Vector2D::new(12.0, -5.0);
                 vec![5]
             }
-            41 => {
+            41 | 411 => {
                 extras.dragging.remove(&5);
                 vec![5]
             }
@@ -194,7 +195,8 @@ mod tests {
 
     /// A caller that lists what it changed gets the same deltas, bit for bit, as a host
     /// whose whole scene is matched and synced every call, through drags, a throw, a host
-    /// move, a reshape and a pin, under both layout presets.
+    /// move, a reshape, a pin and a drag that wakes the layout at rest, under both
+    /// layout presets.
     #[test]
     fn a_list_of_changes_steps_as_the_full_sync_does() {
         for (name, config) in [
@@ -209,7 +211,13 @@ mod tests {
             let mut extras = LayoutExtras::default();
             extras.pinned.insert(20);
             let mut moved = 0;
-            for k in 0..240 {
+            for k in 0..520 {
+                if k == 400 {
+                    assert!(
+                        full.is_converged(&full_state) && listed.is_converged(&listed_state),
+                        "{name}: both layouts rest before the second drag"
+                    );
+                }
                 host_frame(k, &mut full_scene, &mut extras.clone());
                 let mut changed = host_frame(k, &mut listed_scene, &mut extras);
                 changed.push(20);

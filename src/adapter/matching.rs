@@ -40,7 +40,7 @@ pub(super) struct Matching<N> {
     pub(super) bad_nodes: usize,
     /// Repeated ids and bad edges in the scene the topology was last computed from.
     pub(super) topology_problems: usize,
-    /// The slots the last call gave a delta, in slot order (`known.rs`).
+    /// The slots the last call gave a delta, in the order it read them (`known.rs`).
     moved: Vec<u32>,
 }
 

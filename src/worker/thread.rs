@@ -52,10 +52,11 @@ pub(super) struct Worker<N> {
     index: Arc<NodeMap<N, usize>>,
     ids: Arc<Vec<N>>,
     nodes_changed: bool,
-    /// The scene indices of the nodes the host's messages changed since the last step,
-    /// and whether a message changed more than nodes (the node set, the edges, pins,
-    /// forces or the configuration): the step is then told nothing (`adapter/known.rs`).
+    /// The scene indices of the nodes the host's messages changed since the last step
+    /// (`adapter/known.rs`).
     changed: Vec<usize>,
+    /// Whether a message changed more than nodes since the last step (the node set, the
+    /// edges, pins, forces or the configuration): the step is then a full one.
     restructured: bool,
     /// The sequence number of the last message applied.
     applied: u64,

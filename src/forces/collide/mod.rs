@@ -141,8 +141,9 @@ pub(crate) struct Collide {
     /// every body.
     region: Vec<bool>,
     /// The slots of the bodies that give way or are driven (with a finite position), in
-    /// slot order, and the cells they reach as the region is marked.
+    /// slot order.
     moving: Vec<u32>,
+    /// The cells the moving bodies reach, as the region is marked.
     hot: region::HotCells,
     inverse_mass: Vec<f32>,
     /// Each body's velocity during the solve, and what it was before.

@@ -324,6 +324,7 @@ impl Collide {
             inverse_mass,
             motion,
             order,
+            region,
             ..
         } = self;
         let test = Candidates {
@@ -339,7 +340,9 @@ impl Collide {
             slack: grid.usual_motion(),
             margin,
         };
-        let budget = PAIRS_PER_BODY * points.len() + PAIRS_AT_LEAST;
+        // Bounded by the world's bodies, not the region's: a drag through a pile in a
+        // large world keeps the pairs the full search would.
+        let budget = PAIRS_PER_BODY * points.len().max(region.len()) + PAIRS_AT_LEAST;
         let bodies = grid.len();
         runs.resize_with(bodies.div_ceil(RUN), Default::default);
         {

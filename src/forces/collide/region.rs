@@ -27,8 +27,10 @@ const HOT_SIDE: usize = 128;
 /// table: whether a box reaches a marked cell is four reads, however many cells it spans.
 #[derive(Debug, Default)]
 pub(super) struct HotCells {
+    /// The grid's top-left corner and its cells' side.
     origin: Point2D<f32>,
     cell: f32,
+    /// How many cells across and down.
     columns: usize,
     rows: usize,
     /// First the marks' corners (a difference table), then how many marked cells lie

@@ -7,7 +7,7 @@ use std::hash::Hash;
 
 use euclid::default::{Point2D, Vector2D};
 
-use crate::forces::collide::shapes::contact;
+use crate::forces::collide::shapes::gap;
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::layout::IdHasher;
 use crate::world::bindings::ColliderSpec;
@@ -136,15 +136,17 @@ pub fn overlapping_pairs<N: Clone + Eq + Hash>(
                 for &j in bucket.iter().filter(|&&j| j > i) {
                     let (inner_b, round_b) = shapes[j].inner_and_round();
                     let m = &scene.nodes[j];
-                    let gap = if inner_a == Vector2D::zero() && inner_b == Vector2D::zero() {
+                    let apart = if inner_a == Vector2D::zero() && inner_b == Vector2D::zero() {
                         // Two disks.
                         (n.position - m.position).length() - round_a - round_b
                     } else {
-                        let d = m.position - n.position;
-                        let tie = || Vector2D::new(1.0, 0.0);
-                        contact(d, inner_a + inner_b, round_a + round_b, tie).1
+                        gap(
+                            m.position - n.position,
+                            inner_a + inner_b,
+                            round_a + round_b,
+                        )
                     };
-                    if gap < -tolerance {
+                    if apart < -tolerance {
                         count += 1;
                     }
                 }

@@ -40,7 +40,7 @@ pub(crate) mod shapes;
 
 use grid::Grid;
 use pairs::{BySlot, Pair, NONE};
-use shapes::box_contact;
+use shapes::{box_contact, Side};
 
 /// A sleeping body that an awake one would push into faster than this (world units per
 /// second: rapier's sleep threshold at the default length unit) wakes.
@@ -259,7 +259,14 @@ impl Collide {
             let (a, b) = (pair.a as usize, pair.b as usize);
             let d = self.points[b] - self.points[a];
             let outline = if self.boxes {
-                box_contact(&self.inner, &self.round, (a, b), d, || pair.normal)
+                box_contact(
+                    &self.inner,
+                    &self.round,
+                    (a, b),
+                    d,
+                    Side::CentreLine,
+                    || pair.normal,
+                )
             } else {
                 None
             };

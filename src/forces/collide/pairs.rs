@@ -12,7 +12,7 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 
 use super::grid::Grid;
-use super::shapes::box_contact;
+use super::shapes::{box_contact, Side};
 use super::{coincident_normal, Collide, SLEEPING_OVERLAP};
 use crate::parallel;
 use crate::world::RapierSceneWorld;
@@ -213,7 +213,7 @@ impl Candidates<'_> {
             }
         };
         let outline = if boxes {
-            box_contact(inner, round, (ia, ib), d, coincident)
+            box_contact(inner, round, (ia, ib), d, Side::CentreLine, coincident)
         } else {
             None
         };

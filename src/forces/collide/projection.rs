@@ -15,7 +15,7 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::Vector;
 
-use super::shapes::box_contact;
+use super::shapes::{box_contact, Side};
 use super::Collide;
 use crate::world::RapierSceneWorld;
 
@@ -90,7 +90,9 @@ impl Collide {
             let (a, b) = (pair.a as usize, pair.b as usize);
             let d = self.points[b] - self.points[a];
             let outline = if self.boxes {
-                box_contact(&self.inner, &self.round, (a, b), d, || pair.normal)
+                box_contact(&self.inner, &self.round, (a, b), d, Side::Nearest, || {
+                    pair.normal
+                })
             } else {
                 None
             };

@@ -159,8 +159,7 @@ fn finds_every_pair_of_boxes_that_touch() {
         for a in 0..p.len() {
             for b in a + 1..p.len() {
                 let d = p[b] - p[a];
-                let (_, separation) =
-                    super::super::shapes::contact(d, inner[a] + inner[b], 0.0, Vector2D::zero);
+                let separation = super::super::shapes::gap(d, inner[a] + inner[b], 0.0);
                 if separation <= 0.0 {
                     touching += 1;
                     if found.binary_search(&(a as u32, b as u32)).is_err() {

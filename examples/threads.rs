@@ -1,24 +1,78 @@
 //! The layout's step on rayon pools of 1 and 2 threads (feature `parallel`): frames
 //! 30..30+N of a layout from the scene file, in pools built alternately, best of three
-//! runs each, and the ratio.
+//! runs each (or `runs`), and the ratio; for the whole frame and for the stages a
+//! [`StepProfile`] tells apart (the layout's own forces, its contacts, rapier's step,
+//! and the rest of the call: matching, sync in and out, deltas).
 //!
-//! `cargo run --release --features parallel --example threads -- [scene] [preset] [frames]`
-//! (defaults `n10000_e25000 force_directed 240`; `preset` is `force_directed` or
+//! `cargo run --release --features parallel --example threads -- [scene] [preset] [frames] [runs]`
+//! (defaults `n10000_e25000 force_directed 240 3`; `preset` is `force_directed` or
 //! `stress`; a generated name such as `random_n100000_e250000` works too).
 
 mod common;
 
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use common::*;
-use graph_canvas_layout::RapierLayoutConfig;
+use graph_canvas_layout::{RapierLayoutConfig, StepProfile};
 
 const WARM: usize = 30;
-const RUNS: usize = 3;
 
-/// The mean frame (ms) of `frames` frames after the first `WARM`, in a pool of `threads`,
-/// and every node's final position as bits.
-fn time(name: &str, config: &RapierLayoutConfig, threads: usize, frames: usize) -> (f64, Vec<u32>) {
+/// What a run measured, in ms a frame: the whole frame, then the stages.
+#[derive(Clone, Copy)]
+struct Run {
+    frame: f64,
+    forces: f64,
+    contacts: f64,
+    rapier: f64,
+    rest: f64,
+}
+
+impl Run {
+    const INFINITE: Self = Self {
+        frame: f64::INFINITY,
+        forces: f64::INFINITY,
+        contacts: f64::INFINITY,
+        rapier: f64::INFINITY,
+        rest: f64::INFINITY,
+    };
+
+    fn of(frame: Duration, profile: StepProfile, frames: usize) -> Self {
+        let ms = |d: Duration| d.as_secs_f64() * 1000.0 / frames as f64;
+        let stages = profile.forces + profile.contacts + profile.rapier;
+        Self {
+            frame: ms(frame),
+            forces: ms(profile.forces),
+            contacts: ms(profile.contacts),
+            rapier: ms(profile.rapier),
+            rest: ms(profile.total.saturating_sub(stages)),
+        }
+    }
+
+    /// Each figure's best of the two.
+    fn best(self, other: Self) -> Self {
+        Self {
+            frame: self.frame.min(other.frame),
+            forces: self.forces.min(other.forces),
+            contacts: self.contacts.min(other.contacts),
+            rapier: self.rapier.min(other.rapier),
+            rest: self.rest.min(other.rest),
+        }
+    }
+
+    fn figures(self) -> [(&'static str, f64); 5] {
+        [
+            ("frame", self.frame),
+            ("forces", self.forces),
+            ("contacts", self.contacts),
+            ("rapier", self.rapier),
+            ("rest", self.rest),
+        ]
+    }
+}
+
+/// One run of `frames` frames after the first `WARM`, in a pool of `threads`, and every
+/// node's final position as bits.
+fn time(name: &str, config: &RapierLayoutConfig, threads: usize, frames: usize) -> (Run, Vec<u32>) {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
@@ -28,18 +82,20 @@ fn time(name: &str, config: &RapierLayoutConfig, threads: usize, frames: usize) 
         for _ in 0..WARM {
             host.frame(1.0 / 60.0);
         }
+        host.layout.set_profiling(true);
         let started = Instant::now();
         for _ in 0..frames {
             host.frame(1.0 / 60.0);
         }
-        let ms = started.elapsed().as_secs_f64() * 1000.0 / frames as f64;
+        let elapsed = started.elapsed();
+        let profile = host.layout.profile().expect("profiling is on");
         let bits = host
             .scene
             .nodes
             .iter()
             .flat_map(|n| [n.position.x.to_bits(), n.position.y.to_bits()])
             .collect();
-        (ms, bits)
+        (Run::of(elapsed, profile, frames), bits)
     })
 }
 
@@ -48,24 +104,34 @@ fn main() {
     let name = args.next().unwrap_or_else(|| "n10000_e25000".into());
     let preset = args.next().unwrap_or_else(|| "force_directed".into());
     let frames: usize = args.next().and_then(|f| f.parse().ok()).unwrap_or(240);
+    let runs: usize = args.next().and_then(|r| r.parse().ok()).unwrap_or(3);
     let config = match preset.as_str() {
         "stress" => RapierLayoutConfig::stress(),
         _ => RapierLayoutConfig::force_directed(),
     };
-    let (mut best, mut bits) = ([f64::INFINITY; 2], [Vec::new(), Vec::new()]);
-    for run in 0..RUNS {
+    let (mut best, mut bits) = ([Run::INFINITE; 2], [Vec::new(), Vec::new()]);
+    for run in 0..runs {
         for (k, threads) in [1, 2].into_iter().enumerate() {
-            let (ms, positions) = time(&name, &config, threads, frames);
-            println!("{name} {preset} run {run}: {threads} thread(s) {ms:.2} ms a frame");
-            best[k] = best[k].min(ms);
+            let (measured, positions) = time(&name, &config, threads, frames);
+            println!(
+                "{name} {preset} run {run}: {threads} thread(s) {:.2} ms a frame",
+                measured.frame
+            );
+            best[k] = best[k].best(measured);
             bits[k] = positions;
         }
     }
     assert_eq!(bits[0], bits[1], "1 and 2 threads must give the same bits");
+    println!("stage     1 thread  2 threads  ratio  (ms a frame, best of {runs})");
+    for ((stage, one), (_, two)) in best[0].figures().into_iter().zip(best[1].figures()) {
+        println!("{stage:<9} {one:>8.2}  {two:>9.2}  {:>5.2}", two / one);
+    }
+    let own = |r: Run| r.forces + r.contacts;
     println!(
-        "threads: {name} {preset} best of {RUNS}: 1 thread {:.2} ms, 2 threads {:.2} ms, ratio {:.2} (same bits)",
-        best[0],
-        best[1],
-        best[1] / best[0]
+        "threads: {name} {preset} best of {runs}: 1 thread {:.2} ms, 2 threads {:.2} ms, ratio {:.2}; own forces and contacts ratio {:.2} (same bits)",
+        best[0].frame,
+        best[1].frame,
+        best[1].frame / best[0].frame,
+        own(best[1]) / own(best[0])
     );
 }

@@ -156,6 +156,7 @@ mod forces;
 mod input;
 mod layout;
 mod parallel;
+mod profile;
 pub mod quality;
 mod sanitize;
 mod stress;
@@ -186,6 +187,7 @@ pub use input::snapshot_error::SnapshotError;
 pub use input::topology::topology_hash;
 pub use input::validation::{LayoutError, MAX_COORDINATE};
 pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeMap, NodeSet};
+pub use profile::StepProfile;
 pub use timestep::{StepPlan, DEFAULT_TIMESTEP, MIN_TIMESTEP};
 pub use worker::{LayoutFrame, LayoutWorker};
 pub use world::bindings::{

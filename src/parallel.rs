@@ -20,15 +20,43 @@ pub(crate) fn for_each<T: Send, S>(
     init: impl Fn() -> S + Sync + Send,
     f: impl Fn(&mut S, &mut T) + Sync + Send,
 ) {
+    // One item is done here: handing it to the pool from outside it would only wait.
     #[cfg(feature = "parallel")]
-    items.par_iter_mut().for_each_init(init, f);
-    #[cfg(not(feature = "parallel"))]
-    {
-        let mut scratch = init();
-        for item in items {
-            f(&mut scratch, item);
-        }
+    if items.len() > 1 {
+        items.par_iter_mut().for_each_init(init, f);
+        return;
     }
+    let mut scratch = init();
+    for item in items {
+        f(&mut scratch, item);
+    }
+}
+
+/// Below this many items a sort stays on the calling thread: waking the pool's other
+/// threads costs about what they would save.
+#[cfg(feature = "parallel")]
+const PARALLEL_SORT: usize = 32_768;
+
+/// Sorts `items` (stable): on rayon's pool under `parallel` (from [`PARALLEL_SORT`] items on). Both give the same order.
+pub(crate) fn sort<T: Ord + Send>(items: &mut [T]) {
+    #[cfg(feature = "parallel")]
+    if items.len() >= PARALLEL_SORT {
+        items.par_sort();
+        return;
+    }
+    items.sort();
+}
+
+/// Sorts `items` (unstable): on rayon's pool under `parallel` (from [`PARALLEL_SORT`]
+/// items on). For items that are all
+/// different, as every use's are, both give the same order.
+pub(crate) fn sort_unstable<T: Ord + Send>(items: &mut [T]) {
+    #[cfg(feature = "parallel")]
+    if items.len() >= PARALLEL_SORT {
+        items.par_sort_unstable();
+        return;
+    }
+    items.sort_unstable();
 }
 
 /// Splits `buffer` into the disjoint, ascending `ranges` of it, each with its range.

@@ -29,6 +29,7 @@ use crate::forces::Forces;
 use crate::input::scene::{CanvasSceneInput, CanvasViewport};
 use crate::input::validation::{validate, LayoutError};
 use crate::layout::{DeltaMap, Layout, LayoutExtras};
+use crate::profile::{StepProfile, Stopwatch};
 use crate::sanitize::finite_or;
 use crate::timestep::DEFAULT_TIMESTEP;
 use crate::world::events::SceneEvent;
@@ -202,6 +203,18 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// How many topology changes were applied to the existing world in place.
     pub fn patch_count(&self) -> u64 {
         self.patches
+    }
+
+    /// Starts measuring where the calls' time goes ([`StepProfile`], from zero), or
+    /// stops. Off by default: a call then reads no clock.
+    pub fn set_profiling(&mut self, on: bool) {
+        self.forces.profile = on.then(StepProfile::default);
+    }
+
+    /// The time the calls took, by stage, since [`set_profiling`](Self::set_profiling)
+    /// switched profiling on; `None` while it is off.
+    pub fn profile(&self) -> Option<StepProfile> {
+        self.forces.profile
     }
 
     /// Whether `scene` and `extras` differ in topology (node set, edge set, pins) from
@@ -423,6 +436,24 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// One call; `known` lists the scene nodes a caller changed since the last call
     /// (`known.rs`), `None` for a host's scene.
     fn advance(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        state: &mut RapierLayoutState,
+        dt: f32,
+        extras: &LayoutExtras<N>,
+        known: Option<&[usize]>,
+    ) -> DeltaMap<N> {
+        let watch = Stopwatch::start(&self.forces.profile);
+        let deltas = self.advance_untimed(scene, state, dt, extras, known);
+        watch.stop(&mut self.forces.profile, |p| {
+            p.calls += 1;
+            &mut p.total
+        });
+        deltas
+    }
+
+    /// [`advance`](Self::advance), the call's stages.
+    fn advance_untimed(
         &mut self,
         scene: &CanvasSceneInput<N>,
         state: &mut RapierLayoutState,

@@ -13,6 +13,7 @@ use super::state::RapierLayoutState;
 use super::RapierLayout;
 use crate::config::SolverSettings;
 use crate::forces::HeatLaw;
+use crate::profile::Stopwatch;
 use crate::sanitize::positive_or;
 use crate::timestep::{fixed_timestep, StepPlan};
 
@@ -77,6 +78,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         if !forces_on {
             self.forces.release(world);
         }
+        if let Some(profile) = self.forces.profile.as_mut() {
+            profile.substeps += u64::from(plan.substeps);
+        }
         for k in 0..plan.substeps {
             drive_kinematic_bodies(world, &self.drives, k, plan.substeps);
             if forces_on {
@@ -91,7 +95,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             if stale_ccd_in(world, &self.drives) {
                 world.skip_ccd_next_step();
             }
+            let watch = Stopwatch::start(&self.forces.profile);
             world.step(gravity);
+            watch.stop(&mut self.forces.profile, |p| &mut p.rapier);
             self.forces.settle(world, plan.substep_dt);
             if !self.forces.targets.locks.is_empty() {
                 hold_locked_axes(world, &self.forces.targets.locks);

@@ -30,6 +30,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::config::cooling::Cooling;
 use crate::config::{ContactSoftness, RapierLayoutConfig};
+use crate::profile::{StepProfile, Stopwatch};
 use crate::world::RapierSceneWorld;
 
 pub(crate) mod barnes_hut;
@@ -159,6 +160,8 @@ pub(crate) struct Forces<N> {
     applied: bool,
     /// A stress layout's springs at its last cold stop (`rest_bias.rs`).
     rest_bias: rest_bias::RestBias,
+    /// Where the calls' time went, while the host measures it.
+    pub(crate) profile: Option<StepProfile>,
 }
 
 impl<N: Clone + Eq + Hash> Default for Forces<N> {
@@ -182,6 +185,7 @@ impl<N: Clone + Eq + Hash> Default for Forces<N> {
             targets: NodeTargets::default(),
             applied: false,
             rest_bias: rest_bias::RestBias::default(),
+            profile: None,
         }
     }
 }
@@ -311,9 +315,11 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         self.applied = true;
         let heat = law.alpha;
         let n = world.slot_count();
+        let watch = Stopwatch::start(&self.profile);
         self.bodies.gather(world);
         let hold_cold = self.rest_bias.holds(world, n);
         self.sum_forces(world, config, heat, dt, hold_cold);
+        watch.stop(&mut self.profile, |p| &mut p.forces);
         self.rest_bias.take_from(
             world,
             &self.bodies.pushed,
@@ -356,7 +362,9 @@ impl<N: Clone + Eq + Hash> Forces<N> {
                     *v += self.sums.forces[s] * (dt / world.mass_at(s));
                 }
             }
+            let watch = Stopwatch::start(&self.profile);
             self.collide.resolve(world, &self.bodies, contacts, dt);
+            watch.stop(&mut self.profile, |p| &mut p.contacts);
         }
         for s in 0..n {
             let change = if separate {
@@ -472,6 +480,8 @@ impl<N: Clone + Eq + Hash> Forces<N> {
 
     /// After the step: what the disk separation does once the bodies have moved.
     pub(crate) fn settle(&mut self, world: &mut RapierSceneWorld<N>, dt: f32) {
+        let watch = Stopwatch::start(&self.profile);
         self.collide.relax(world, dt);
+        watch.stop(&mut self.profile, |p| &mut p.contacts);
     }
 }

@@ -16,10 +16,14 @@
 
 use std::hash::Hash;
 
+use euclid::default::{Point2D, Vector2D};
+
 use super::targets::NodeTargets;
 use super::{BodyForce, ForceContext, ForceSums};
 use crate::config::{RapierLayoutConfig, SpringModel};
+use crate::parallel;
 use crate::sanitize::{finite_or, positive_or};
+use crate::world::slot::SpringView;
 use crate::world::RapierSceneWorld;
 
 /// One spring, as this force reads it.
@@ -51,7 +55,15 @@ pub(crate) struct SpringForce {
     incident: Vec<u32>,
     /// The links a substep with few pushed bodies visits, in ascending order.
     visit: Vec<u32>,
+    /// Each link's pull on its two ends, by link (the `parallel` path).
+    pulls: Vec<[EndPull; 2]>,
 }
+
+/// From this many links on, `parallel` builds work the pulls out link by link and then
+/// sum them body by body, both side by side (fewer are not worth the pool's start).
+const BY_BODY_LINKS: usize = 8_192;
+/// Links, or bodies, a piece of that work takes (fixed, so no sum depends on the pool).
+const RUN: usize = 2_048;
 
 /// Below one pushed body in this many, a substep visits only the pushed bodies' links
 /// (in the order of all links, so every sum is the same) instead of checking every link.
@@ -77,6 +89,12 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for SpringForce {
             gain,
             as_forces,
         };
+        let bodies = LinkBodies {
+            points: frame.points,
+            velocities: frame.velocities,
+            pushed: frame.pushed,
+            dt: frame.dt,
+        };
         let pushed = frame.pushed;
         let few = pushed.iter().filter(|&&p| p).count() * FEW_PUSHED < pushed.len();
         if few && self.starts.len() == pushed.len() + 1 {
@@ -90,13 +108,18 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for SpringForce {
             self.visit.sort_unstable();
             self.visit.dedup();
             #[cfg(debug_assertions)]
-            self.check_subset(&pull, frame);
+            self.check_subset(&pull, bodies);
             for &k in &self.visit {
-                pull.apply(&self.links[k as usize], frame, out);
+                pull.apply(&self.links[k as usize], bodies, out);
             }
+        } else if cfg!(feature = "parallel")
+            && self.links.len() >= BY_BODY_LINKS
+            && self.starts.len() == pushed.len() + 1
+        {
+            self.apply_by_body(&pull, bodies, out);
         } else {
             for link in &self.links {
-                pull.apply(link, frame, out);
+                pull.apply(link, bodies, out);
             }
         }
     }
@@ -109,10 +132,17 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for SpringForce {
 
 impl SpringForce {
     fn rebuild<N: Clone + Eq + Hash>(&mut self, world: &RapierSceneWorld<N>) {
+        self.set_links(world.slot_count(), world.springs());
+        self.version = Some(world.version());
+    }
+
+    /// The links of `springs` between `slots` bodies, with their degree shares and
+    /// each body's links.
+    fn set_links(&mut self, slots: usize, springs: impl Iterator<Item = SpringView>) {
         self.degrees.clear();
-        self.degrees.resize(world.slot_count(), 0);
+        self.degrees.resize(slots, 0);
         self.links.clear();
-        for spring in world.springs() {
+        for spring in springs {
             self.degrees[spring.a] += 1;
             self.degrees[spring.b] += 1;
             self.links.push(Link {
@@ -152,7 +182,56 @@ impl SpringForce {
                 next[end as usize] += 1;
             }
         }
-        self.version = Some(world.version());
+    }
+}
+
+impl SpringForce {
+    /// Every link's pull, as the links in order would add it: the pulls link by link,
+    /// then each body's sum over its links in ascending order (the order the links
+    /// reach it in), both in fixed runs side by side under `parallel`. Every sum is
+    /// the same, bit for bit, as one pass over the links.
+    fn apply_by_body(&mut self, pull: &Pull, bodies: LinkBodies, out: &mut ForceSums) {
+        let n = self.starts.len() - 1;
+        let Self {
+            links,
+            starts,
+            incident,
+            pulls,
+            ..
+        } = self;
+        pulls.clear();
+        pulls.resize(links.len(), [None; 2]);
+        let runs =
+            |len: usize| (0..len.div_ceil(RUN)).map(move |r| r * RUN..((r + 1) * RUN).min(len));
+        let mut jobs = parallel::split_ranges(pulls, runs(links.len()));
+        parallel::for_each(
+            &mut jobs,
+            || (),
+            |(), (range, pulls)| {
+                for (p, link) in pulls.iter_mut().zip(&links[range.clone()]) {
+                    *p = pull.ends(link, bodies);
+                }
+            },
+        );
+        let pulls: &[[EndPull; 2]] = pulls;
+        let mut jobs: Vec<_> = parallel::split_ranges(&mut out.springs[..n], runs(n))
+            .into_iter()
+            .zip(parallel::split_ranges(&mut out.resistance[..n], runs(n)))
+            .collect();
+        parallel::for_each(
+            &mut jobs,
+            || (),
+            |(), ((range, springs), (_, resistance))| {
+                for (i, s) in range.clone().enumerate() {
+                    let from = starts[s] as usize..starts[s + 1] as usize;
+                    for &k in &incident[from] {
+                        // The end this body is (a link from a body to itself pulls nothing).
+                        let end = usize::from(links[k as usize].a as usize != s);
+                        add(springs, resistance, i, pulls[k as usize][end]);
+                    }
+                }
+            },
+        );
     }
 }
 
@@ -160,16 +239,16 @@ impl SpringForce {
     /// Debug builds (the tests): the pushed bodies' links give every sum that all
     /// links give, bit for bit.
     #[cfg(debug_assertions)]
-    fn check_subset<N>(&self, pull: &Pull, frame: &ForceContext<'_, N>) {
+    fn check_subset(&self, pull: &Pull, bodies: LinkBodies) {
         let sums = |links: &mut dyn Iterator<Item = &Link>| {
-            let n = frame.pushed.len();
+            let n = bodies.pushed.len();
             let mut out = ForceSums {
                 springs: vec![euclid::default::Vector2D::zero(); n],
                 resistance: vec![0.0; n],
                 ..ForceSums::default()
             };
             for link in links {
-                pull.apply(link, frame, &mut out);
+                pull.apply(link, bodies, &mut out);
             }
             let bits: Vec<[u32; 3]> = (out.springs.iter().zip(&out.resistance))
                 .map(|(f, r)| [f.x.to_bits(), f.y.to_bits(), r.to_bits()])
@@ -195,54 +274,86 @@ struct Pull {
     as_forces: bool,
 }
 
+/// What the springs read of the bodies, by world slot.
+#[derive(Clone, Copy)]
+struct LinkBodies<'a> {
+    points: &'a [Point2D<f32>],
+    velocities: &'a [Vector2D<f32>],
+    pushed: &'a [bool],
+    /// The substep's length, in seconds.
+    dt: f32,
+}
+
+/// What a link adds to one end's sums: a force and, for springs applied as forces, a
+/// resistance (`None`: nothing).
+type EndPull = Option<(Vector2D<f32>, Option<f32>)>;
+
 impl Pull {
     /// Adds `link`'s pull on its pushed ends to `out`.
     #[inline]
-    fn apply<N>(&self, link: &Link, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
+    fn apply(&self, link: &Link, bodies: LinkBodies, out: &mut ForceSums) {
+        let ends = self.ends(link, bodies);
+        for (end, pull) in [link.a, link.b].into_iter().zip(ends) {
+            add(&mut out.springs, &mut out.resistance, end as usize, pull);
+        }
+    }
+
+    /// What `link` adds to the sums of its ends `a` and `b`.
+    #[inline]
+    fn ends(&self, link: &Link, bodies: LinkBodies) -> [EndPull; 2] {
         let Self {
             scale,
             gain,
             as_forces,
         } = *self;
-        let dt = frame.dt;
+        let dt = bodies.dt;
         let (a, b) = (link.a as usize, link.b as usize);
-        let (Some(&pa), Some(&pb)) = (frame.points.get(a), frame.points.get(b)) else {
-            return;
+        let (Some(&pa), Some(&pb)) = (bodies.points.get(a), bodies.points.get(b)) else {
+            return [None; 2];
         };
-        if !(frame.pushed[a] || frame.pushed[b]) {
+        if !(bodies.pushed[a] || bodies.pushed[b]) {
             // Neither end moves this substep (asleep, held or fixed), and only the
             // pushed bodies' sums are read: a resting graph's springs cost a check.
-            return;
+            return [None; 2];
         }
         let d = pb - pa;
         let length = d.length();
         if !(length > 1e-3 && length.is_finite()) {
-            return;
+            return [None; 2];
         }
         let k = (link.stiffness * scale).min(link.cap);
         if !as_forces {
             // The joint pulls evenly: add the uneven part only.
             let f = d * (gain * link.share * k * (length - link.rest_length) / length);
-            if f.is_finite() {
-                out.springs[a] += f;
-                out.springs[b] += f;
-            }
-            return;
+            let end = f.is_finite().then_some((f, None));
+            return [end; 2];
         }
         let direction = d / length;
         let c = link.damping * scale;
-        let closing = (frame.velocities[b] - frame.velocities[a]).dot(direction);
+        let closing = (bodies.velocities[b] - bodies.velocities[a]).dot(direction);
         let pull = k * (length - link.rest_length) + c * closing;
         let resistance = dt * dt * k + dt * c;
-        for (end, toward, part) in [
+        [
             (a, direction, 1.0 + gain * link.share),
             (b, -direction, 1.0 - gain * link.share),
-        ] {
+        ]
+        .map(|(end, toward, part)| {
             let f = toward * (pull * part);
-            if frame.pushed[end] && f.is_finite() {
-                out.springs[end] += f;
-                out.resistance[end] += resistance * part;
-            }
+            (bodies.pushed[end] && f.is_finite()).then_some((f, Some(resistance * part)))
+        })
+    }
+}
+
+/// Adds one end's pull to the sums of body `s`.
+#[inline]
+fn add(springs: &mut [Vector2D<f32>], resistance: &mut [f32], s: usize, pull: EndPull) {
+    if let Some((f, r)) = pull {
+        springs[s] += f;
+        if let Some(r) = r {
+            resistance[s] += r;
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -10,6 +10,7 @@
 //! is the exact O(n²) sum. The tree knows nothing of bodies, heat or configuration:
 //! `forces/many_body.rs` turns it into a force on bodies.
 
+use crate::parallel;
 use euclid::default::{Point2D, Vector2D};
 
 mod groups;
@@ -141,13 +142,18 @@ impl ManyBody {
         let (cx, cy) = ((lo.x + hi.x) * 0.5, (lo.y + hi.y) * 0.5);
         let (x0, y0, side) = (cx - half, cy - half, 2.0 * half);
         let points = &self.points;
-        for entry in &mut self.entries {
-            let p = points[entry.1 as usize];
-            entry.0 = z_order((p.x - x0) / side, (p.y - y0) / side);
-        }
+        parallel::for_each(
+            &mut self.entries,
+            || (),
+            |(), entry| {
+                let p = points[entry.1 as usize];
+                entry.0 = z_order((p.x - x0) / side, (p.y - y0) / side);
+            },
+        );
         // Adaptive: the last build's order is nearly this one. Codes tie only within a
-        // deepest leaf, whose points then go in index order, whatever the last order.
-        self.entries.sort();
+        // deepest leaf, whose points then go in index order, whatever the last order
+        // (and the entries are unique, so any sort gives the same order).
+        parallel::sort(&mut self.entries);
         self.index.extend(self.entries.iter().map(|e| e.1));
         self.sorted
             .extend(self.index.iter().map(|&i| points[i as usize]));

@@ -34,6 +34,7 @@ use crate::world::RapierSceneWorld;
 
 mod grid;
 mod pairs;
+mod passes;
 mod projection;
 mod region;
 pub(crate) mod shapes;
@@ -53,6 +54,8 @@ const SLEEPING_OVERLAP: f32 = 0.25;
 /// `n1000_e2500`.
 const PASSES: usize = 8;
 const RELAX_PASSES: usize = 4;
+/// Pairs a run of the separations after the step takes (side by side under `parallel`).
+const SEPARATION_RUN: usize = 8_192;
 /// How many runs of the pairs a pass works through side by side (eight were slower).
 const STREAMS: usize = 4;
 /// A pass that changes no pair's relative speed by more than this (world units per
@@ -161,6 +164,15 @@ pub(crate) struct Collide {
     last_version: Option<u64>,
     /// The softness of the last [`resolve`](Self::resolve).
     softness: Option<Softness>,
+    /// The pair each of `last` warm-starts, by index (`NONE`: gone).
+    warm: Vec<u32>,
+    /// By local index, a sleeping body's inverse mass once it wakes (0 for the rest).
+    wake_inverse_mass: Vec<f32>,
+    /// Where the blocks of the grid's order that the passes solve side by side start
+    /// (`passes.rs`), and the end of the last, as local indices.
+    blocks: Vec<u32>,
+    /// The pairs between two blocks, by index, in order.
+    across: Vec<u32>,
 }
 
 impl Collide {
@@ -186,6 +198,8 @@ impl Collide {
             return false;
         }
         self.share();
+        self.read_wake_masses(world);
+        self.cut_blocks();
         self.warm_start(world.version());
         let softness = Softness::new(contacts, dt);
         self.softness = Some(softness);
@@ -254,27 +268,38 @@ impl Collide {
         }
         // The world's bodies do not change between `resolve` and here.
         debug_assert!(self.order.iter().all(|&s| (s as usize) < slots));
-        // Every body in a pair was read.
-        for pair in &mut self.pairs {
-            let (a, b) = (pair.a as usize, pair.b as usize);
-            let d = self.points[b] - self.points[a];
-            let outline = if self.boxes {
-                box_contact(
-                    &self.inner,
-                    &self.round,
-                    (a, b),
-                    d,
-                    Side::CentreLine,
-                    || pair.normal,
-                )
-            } else {
-                None
-            };
-            pair.separation = match outline {
-                Some((_, separation)) => separation,
-                None => d.length() - (self.radius[a] + self.radius[b]),
-            };
-        }
+        // Every body in a pair was read. In runs of pairs side by side under `parallel`
+        // (each pair's own arithmetic: the same on any number of threads).
+        let (points, inner, round, radius, boxes) = (
+            &self.points,
+            &self.inner,
+            &self.round,
+            &self.radius,
+            self.boxes,
+        );
+        let count = self.pairs.len();
+        let runs = (0..count.div_ceil(SEPARATION_RUN))
+            .map(|r| r * SEPARATION_RUN..((r + 1) * SEPARATION_RUN).min(count));
+        let mut jobs = crate::parallel::split_ranges(&mut self.pairs, runs);
+        crate::parallel::for_each(
+            &mut jobs,
+            || (),
+            |(), (_, pairs)| {
+                for pair in pairs.iter_mut() {
+                    let (a, b) = (pair.a as usize, pair.b as usize);
+                    let d = points[b] - points[a];
+                    let outline = if boxes {
+                        box_contact(inner, round, (a, b), d, Side::CentreLine, || pair.normal)
+                    } else {
+                        None
+                    };
+                    pair.separation = match outline {
+                        Some((_, separation)) => separation,
+                        None => d.length() - (radius[a] + radius[b]),
+                    };
+                }
+            },
+        );
         for _ in 0..RELAX_PASSES {
             if self.pass(world, None, 1.0 / dt) < SETTLED_CHANGE {
                 break;
@@ -331,6 +356,19 @@ impl Collide {
         }
     }
 
+    /// The inverse mass each sleeping body in the grid's order takes when it wakes.
+    fn read_wake_masses<N: Clone + Eq + Hash>(&mut self, world: &RapierSceneWorld<N>) {
+        self.wake_inverse_mass.clear();
+        self.wake_inverse_mass
+            .extend(self.order.iter().zip(&self.sleeping).map(|(&s, &asleep)| {
+                if asleep {
+                    1.0 / world.mass_at(s as usize)
+                } else {
+                    0.0
+                }
+            }));
+    }
+
     /// Each pair's shares of a change of its relative speed, from the inverse masses.
     fn share(&mut self) {
         for pair in &mut self.pairs {
@@ -345,151 +383,5 @@ impl Collide {
                 (0.0, 0.0)
             };
         }
-    }
-
-    /// One pass over the pairs: with `softness`, the push that parts an overlap;
-    /// without, only what keeps each pair from closing. Returns the largest change of a
-    /// pair's relative speed.
-    fn pass<N: Clone + Eq + Hash>(
-        &mut self,
-        world: &mut RapierSceneWorld<N>,
-        softness: Option<Softness>,
-        inverse_dt: f32,
-    ) -> f32 {
-        match softness {
-            Some(soft) => self.pass_with::<N, true>(world, soft, inverse_dt),
-            None => {
-                let plain = Softness {
-                    bias_rate: 0.0,
-                    mass_scale: 1.0,
-                    impulse_scale: 0.0,
-                };
-                self.pass_with::<N, false>(world, plain, inverse_dt)
-            }
-        }
-    }
-
-    /// [`pass`](Self::pass), with the push (`PUSH`) or without, so the loop carries no
-    /// choice it need not make.
-    fn pass_with<N: Clone + Eq + Hash, const PUSH: bool>(
-        &mut self,
-        world: &mut RapierSceneWorld<N>,
-        soft: Softness,
-        inverse_dt: f32,
-    ) -> f32 {
-        let mut largest = 0.0_f32;
-        let mut woke = false;
-        // Asked once: a pair is tested for waking a body only while some body sleeps.
-        let sleepers = self.sleeping.contains(&true);
-        // Gauss–Seidel over four far-apart runs of the pairs at once, a pair of each in
-        // turn: consecutive pairs of one run share a body, so each waits on the last
-        // one's velocity, while pairs of different runs (far apart in the grid's order)
-        // rarely do, and the processor works on them side by side (a fifth less time a
-        // pass on `random_n100000_e250000`).
-        let count = self.pairs.len();
-        let stride = count.div_ceil(STREAMS);
-        for i in 0..stride {
-            for run in 0..STREAMS {
-                let k = run * stride + i;
-                if k < count {
-                    let change =
-                        self.solve_pair::<N, PUSH>(world, k, soft, inverse_dt, sleepers, &mut woke);
-                    largest = largest.max(change.abs());
-                }
-            }
-        }
-        if woke {
-            self.share();
-        }
-        largest
-    }
-
-    /// Pair `k` of a pass: the change of its relative normal speed that keeps it from
-    /// closing beyond touching (and with `PUSH`, parts an overlap), shared between its
-    /// bodies and returned. Wakes a sleeping body pushed into (`sleepers`: whether any
-    /// body sleeps), setting `woke`.
-    ///
-    /// NOTE: written without branches on the pair's values (selects instead): whether a
-    /// pair touches, pushes or holds is all but random from one pair to the next, and a
-    /// mispredicted branch a pair cost more than its arithmetic (a third of a pass).
-    /// [`push`](Self::push) branches only on whether both bodies hold, which is rare.
-    #[inline(always)]
-    fn solve_pair<N: Clone + Eq + Hash, const PUSH: bool>(
-        &mut self,
-        world: &mut RapierSceneWorld<N>,
-        k: usize,
-        soft: Softness,
-        inverse_dt: f32,
-        sleepers: bool,
-        woke: &mut bool,
-    ) -> f32 {
-        let pair = self.pairs[k];
-        let impulse = self.impulses[k];
-        let (a, b) = (pair.a as usize, pair.b as usize);
-        let closing = (self.velocity[b] - self.velocity[a]).dot(pair.normal);
-        let s = pair.separation;
-        // Apart: may close the gap within the substep, no more.
-        let apart = -(closing + s * inverse_dt);
-        let touching = if PUSH {
-            let bias = (soft.bias_rate * s).max(-MAX_PUSH_SPEED);
-            -(closing + bias) * soft.mass_scale - soft.impulse_scale * impulse
-        } else {
-            -closing
-        };
-        let wanted = if s > 0.0 { apart } else { touching };
-        if sleepers && wanted > 0.0 && (self.sleeping[a] || self.sleeping[b]) {
-            let neither = pair.share_a + pair.share_b == 0.0;
-            if wanted > WAKE_SPEED || neither || s < -SLEEPING_OVERLAP {
-                self.wake_pair(world, k);
-                *woke = true;
-            }
-        }
-        let change = wanted.max(-impulse);
-        self.push(k, change);
-        change
-    }
-
-    /// A sleeping body of pair `k` pushed into, or overlapped, wakes and gives way (one
-    /// that an awake body only rests against, more slowly than a body falls asleep,
-    /// stays asleep), and the pair's shares follow.
-    #[cold]
-    fn wake_pair<N: Clone + Eq + Hash>(&mut self, world: &mut RapierSceneWorld<N>, k: usize) {
-        let pair = self.pairs[k];
-        for l in [pair.a as usize, pair.b as usize] {
-            if self.sleeping[l] {
-                self.sleeping[l] = false;
-                let s = self.order[l] as usize;
-                world.body_at_mut(s).wake_up(true);
-                self.inverse_mass[l] = 1.0 / world.mass_at(s);
-            }
-        }
-        self.share_pair(k);
-    }
-
-    /// Pair `k`'s shares, after one of its bodies woke.
-    fn share_pair(&mut self, k: usize) {
-        let pair = &mut self.pairs[k];
-        let (wa, wb) = (
-            self.inverse_mass[pair.a as usize],
-            self.inverse_mass[pair.b as usize],
-        );
-        let total = wa + wb;
-        if total > 0.0 {
-            (pair.share_a, pair.share_b) = (wa / total, wb / total);
-        }
-    }
-
-    /// Adds `change` (a change of the pair's relative normal speed) to pair `k`,
-    /// shared between the two bodies.
-    #[inline]
-    fn push(&mut self, k: usize, change: f32) {
-        let pair = self.pairs[k];
-        if pair.share_a + pair.share_b == 0.0 {
-            return;
-        }
-        self.impulses[k] += change;
-        let (normal, a, b) = (pair.normal, pair.a as usize, pair.b as usize);
-        self.velocity[a] -= normal * (change * pair.share_a);
-        self.velocity[b] += normal * (change * pair.share_b);
     }
 }

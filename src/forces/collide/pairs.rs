@@ -12,6 +12,7 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 
 use super::grid::Grid;
+use super::passes::push;
 use super::shapes::{box_contact, Side};
 use super::{coincident_normal, Collide, SLEEPING_OVERLAP};
 use crate::parallel;
@@ -137,6 +138,9 @@ pub(super) struct RunPairs {
 /// neighbouring cells' pairs in runs of this many bodies of the grid's order, side by
 /// side under `parallel` (fixed, so the pairs do not depend on the thread count).
 const RUN: usize = 1_024;
+
+/// The pairs a run of the warm start looks up.
+const WARM_RUN: usize = 4_096;
 
 /// What the test of a candidate pair reads, by local index.
 struct Candidates<'a> {
@@ -389,10 +393,8 @@ impl Collide {
             });
         }
         if pairs.len() < budget {
-            grid.fast_pairs(points, half, motion, |a, b| {
-                extra.extend(test.pair(a, b));
-                pairs.len() + extra.len() < budget
-            });
+            let room = budget - pairs.len();
+            grid.fast_pairs(points, half, motion, |a, b| test.pair(a, b), room, extra);
         }
         if !self.extra.is_empty() {
             self.merge_extra();
@@ -434,27 +436,60 @@ impl Collide {
     }
 
     /// Starts each pair from the impulse it ended the last substep with, found by its
-    /// two slots.
+    /// two slots: the pairs looked up in fixed runs (side by side under `parallel`),
+    /// then the impulses added in the order they were kept.
     pub(super) fn warm_start(&mut self, version: u64) {
         if self.last_version != Some(version) {
             return;
         }
-        let last = std::mem::take(&mut self.last);
-        for &(sa, sb, impulse) in &last {
-            let (Some(&a), Some(&b)) = (self.local.get(sa as usize), self.local.get(sb as usize))
-            else {
-                continue;
-            };
-            if a == NONE || b == NONE {
-                continue;
-            }
-            let (a, b) = (a.min(b), a.max(b));
-            let row = self.rows[a as usize] as usize..self.rows[a as usize + 1] as usize;
-            if let Some(k) = row.into_iter().find(|&k| self.pairs[k].b == b) {
-                self.push(k, impulse);
+        let Self {
+            last,
+            local,
+            rows,
+            pairs,
+            impulses,
+            velocity,
+            warm,
+            ..
+        } = self;
+        warm.clear();
+        warm.resize(last.len(), NONE);
+        // Runs of a fixed length, one for all below it (not worth the pool's start).
+        let run = if last.len() < WARM_RUN * 2 {
+            last.len().max(1)
+        } else {
+            WARM_RUN
+        };
+        let runs = (0..last.len().div_ceil(run)).map(|r| r * run..((r + 1) * run).min(last.len()));
+        let mut jobs = parallel::split_ranges(warm, runs);
+        let (local, rows, pairs_found): (&[u32], &[u32], &[Pair]) = (local, rows, pairs);
+        parallel::for_each(
+            &mut jobs,
+            || (),
+            |(), (range, found)| {
+                for (k, &(sa, sb, _)) in found.iter_mut().zip(&last[range.clone()]) {
+                    let (Some(&a), Some(&b)) = (local.get(sa as usize), local.get(sb as usize))
+                    else {
+                        continue;
+                    };
+                    if a == NONE || b == NONE {
+                        continue;
+                    }
+                    let (a, b) = (a.min(b), a.max(b));
+                    let row = rows[a as usize] as usize..rows[a as usize + 1] as usize;
+                    if let Some(at) = row.into_iter().find(|&k| pairs_found[k].b == b) {
+                        *k = at as u32;
+                    }
+                }
+            },
+        );
+        for (&k, &(_, _, impulse)) in warm.iter().zip(last.iter()) {
+            if k != NONE {
+                let (k, pair) = (k as usize, &pairs[k as usize]);
+                let ends = (pair.a as usize, pair.b as usize);
+                push(pair, &mut impulses[k], velocity, ends, impulse);
             }
         }
-        self.last = last;
     }
 
     /// Keeps the impulses of the pairs that pushed, by their slots, for the next substep.

@@ -77,8 +77,18 @@ fn a_layout_is_bit_identical_on_one_thread_and_on_two() {
 #[test]
 fn a_large_layout_is_bit_identical_on_one_thread_and_on_two() {
     let frames = 100;
-    let one = run("n10000_e25000", RapierLayoutConfig::force_directed(), 1, frames);
-    let two = run("n10000_e25000", RapierLayoutConfig::force_directed(), 2, frames);
+    let one = run(
+        "n10000_e25000",
+        RapierLayoutConfig::force_directed(),
+        1,
+        frames,
+    );
+    let two = run(
+        "n10000_e25000",
+        RapierLayoutConfig::force_directed(),
+        2,
+        frames,
+    );
     let moved = one[frames - 2] != one[frames - 1];
     assert!(moved, "nothing moved by frame {frames}");
     assert_eq!(

@@ -77,6 +77,102 @@ impl Node {
     }
 }
 
+/// A cell still to split: (cell, first entry, entries, depth, half width).
+type Work = (u32, u32, u32, u32, f32);
+
+/// From this many points on, the tree's build splits the cells at [`SUBTREE_DEPTH`] as
+/// subtrees of their own (side by side under `parallel`).
+const SUBTREES_FROM: usize = 8_192;
+/// The depth of those subtrees' roots (up to 4³ = 64 of them).
+const SUBTREE_DEPTH: u32 = 3;
+
+/// Splits the cells of `work` depth first: a cell's quadrants are the four runs of its
+/// points by the code's two bits at its depth; their cells go at the end of `nodes`.
+/// Cells at depth `stop` are left whole and listed in `subtrees`, each with an empty
+/// buffer for its own cells.
+fn split_cells(
+    entries: &[(u64, u32)],
+    nodes: &mut Vec<Node>,
+    work: &mut Vec<Work>,
+    stop: u32,
+    subtrees: &mut Vec<(Work, Vec<Node>)>,
+) {
+    while let Some((c, first, count, depth, half)) = work.pop() {
+        nodes[c as usize].first = first;
+        nodes[c as usize].count = count;
+        if count < 2 || depth >= MAX_DEPTH {
+            continue;
+        }
+        if depth == stop {
+            subtrees.push(((c, first, count, depth, half), Vec::new()));
+            continue;
+        }
+        let shift = 2 * (MAX_DEPTH - 1 - depth);
+        let run = &entries[first as usize..(first + count) as usize];
+        let quadrant = |e: &(u64, u32)| ((e.0 >> shift) & 3) as u32;
+        let mut starts = [0_u32, 0, 0, 0, count];
+        for (q, start) in (1_u32..).zip(&mut starts[1..4]) {
+            *start = run.partition_point(|e| quadrant(e) < q) as u32;
+        }
+        let children = nodes.len() as u32;
+        nodes[c as usize].children = children;
+        let h = half * 0.5;
+        nodes.extend([Node::square(h); 4]);
+        // The first quadrant on top of the stack: its cells follow its parent's.
+        for k in (0..4).rev() {
+            let (start, end) = (starts[k], starts[k + 1]);
+            work.push((
+                children + k as u32,
+                first + start,
+                end - start,
+                depth + 1,
+                h,
+            ));
+        }
+    }
+}
+
+/// `node` of a subtree, its children moved by `offset`.
+fn moved(node: &Node, offset: u32) -> Node {
+    Node {
+        children: if node.children == NONE {
+            NONE
+        } else {
+            node.children + offset
+        },
+        ..*node
+    }
+}
+
+/// Centres of charge of the cells `range` of `nodes`, bottom up: children come after
+/// their parents, so a reverse sweep sums each cell after its children (cells past the
+/// range are summed already). `sorted` holds the points in tree order.
+fn sum_charges(nodes: &mut [Node], sorted: &[Point2D<f32>], range: std::ops::Range<usize>) {
+    for c in range.rev() {
+        let (mut mx, mut my) = (0.0_f32, 0.0_f32);
+        let node = nodes[c];
+        if node.children == NONE {
+            for p in &sorted[node.points()] {
+                mx += p.x;
+                my += p.y;
+            }
+        } else {
+            for k in 0..4 {
+                let child = nodes[(node.children + k) as usize];
+                mx += child.mx * child.charge();
+                my += child.my * child.charge();
+            }
+        }
+        let q = node.charge();
+        let node = &mut nodes[c];
+        (node.mx, node.my) = if q > 0.0 {
+            (mx / q, my / q)
+        } else {
+            (0.0, 0.0)
+        };
+    }
+}
+
 /// A reusable Barnes–Hut quadtree: build it over positions, then ask for forces.
 /// Buffers are kept between calls, so a per-substep rebuild allocates nothing once warm.
 ///
@@ -103,8 +199,10 @@ pub struct ManyBody {
     index: Vec<u32>,
     /// Every finite point's Z-order code and index, sorted.
     entries: Vec<(u64, u32)>,
-    /// The cells still to split: (cell, first entry, entries, depth, half width).
-    work: Vec<(u32, u32, u32, u32, f32)>,
+    /// The cells still to split.
+    work: Vec<Work>,
+    /// The subtrees of a large tree, each with its own cells.
+    subtrees: Vec<(Work, Vec<Node>)>,
     stack: Vec<u32>,
     /// Scratch of [`forces`](Self::forces): the groups, whether each point (in the
     /// tree's order) is wanted, and the forces in that order.
@@ -122,6 +220,11 @@ impl ManyBody {
     /// depth, 24 bits each way), so every cell's points are one run of the order and its
     /// quadrants four runs of it.
     pub fn build(&mut self, points: &[Point2D<f32>]) {
+        self.build_in_subtrees_from(points, SUBTREES_FROM);
+    }
+
+    /// [`build`](Self::build), in subtrees from `subtrees_from` points on.
+    fn build_in_subtrees_from(&mut self, points: &[Point2D<f32>], subtrees_from: usize) {
         self.nodes.clear();
         let same_points = points.len() == self.points.len();
         self.points.clear();
@@ -157,8 +260,7 @@ impl ManyBody {
         self.index.extend(self.entries.iter().map(|e| e.1));
         self.sorted
             .extend(self.index.iter().map(|&i| points[i as usize]));
-        self.split(half);
-        self.sum_charges();
+        self.split(half, subtrees_from);
     }
 
     /// The finite points' indices (codes to be filled in): the last build's entries, in
@@ -186,71 +288,78 @@ impl ManyBody {
         );
     }
 
-    /// Splits the root (of half width `half`) and its descendants, depth first: a cell's
-    /// quadrants are the four runs of its points by the code's two bits at its depth;
-    /// their cells go at the end.
-    fn split(&mut self, half: f32) {
+    /// Splits the root (of half width `half`) and its descendants, and sums their
+    /// centres of charge. From `subtrees_from` points on ([`SUBTREES_FROM`]), the cells at depth
+    /// [`SUBTREE_DEPTH`] are split and summed as subtrees of their own (side by side
+    /// under `parallel`) and appended in order: the same cells, numbered otherwise, and
+    /// every centre the same sum.
+    fn split(&mut self, half: f32, subtrees_from: usize) {
         let mut work = std::mem::take(&mut self.work);
         work.clear();
         work.push((0_u32, 0_u32, self.entries.len() as u32, 0_u32, half));
-        while let Some((c, first, count, depth, half)) = work.pop() {
-            self.nodes[c as usize].first = first;
-            self.nodes[c as usize].count = count;
-            if count < 2 || depth >= MAX_DEPTH {
-                continue;
-            }
-            let shift = 2 * (MAX_DEPTH - 1 - depth);
-            let run = &self.entries[first as usize..(first + count) as usize];
-            let quadrant = |e: &(u64, u32)| ((e.0 >> shift) & 3) as u32;
-            let mut starts = [0_u32, 0, 0, 0, count];
-            for (q, start) in (1_u32..).zip(&mut starts[1..4]) {
-                *start = run.partition_point(|e| quadrant(e) < q) as u32;
-            }
-            let children = self.nodes.len() as u32;
-            self.nodes[c as usize].children = children;
-            let h = half * 0.5;
-            self.nodes.extend([Node::square(h); 4]);
-            // The first quadrant on top of the stack: its cells follow its parent's.
-            for k in (0..4).rev() {
-                let (start, end) = (starts[k], starts[k + 1]);
-                work.push((
-                    children + k as u32,
-                    first + start,
-                    end - start,
-                    depth + 1,
-                    h,
-                ));
-            }
-        }
+        let stop = if self.entries.len() >= subtrees_from {
+            SUBTREE_DEPTH
+        } else {
+            u32::MAX
+        };
+        let mut subtrees = std::mem::take(&mut self.subtrees);
+        subtrees.clear();
+        split_cells(
+            &self.entries,
+            &mut self.nodes,
+            &mut work,
+            stop,
+            &mut subtrees,
+        );
         self.work = work;
-    }
-
-    /// Centres of charge, bottom up: children are created after their parents, so a
-    /// reverse sweep sums each cell after its children.
-    fn sum_charges(&mut self) {
-        for c in (0..self.nodes.len()).rev() {
-            let (mut mx, mut my) = (0.0_f32, 0.0_f32);
-            let node = self.nodes[c];
-            if node.children == NONE {
-                for p in &self.sorted[node.points()] {
-                    mx += p.x;
-                    my += p.y;
-                }
-            } else {
-                for k in 0..4 {
-                    let child = self.nodes[(node.children + k) as usize];
-                    mx += child.mx * child.charge();
-                    my += child.my * child.charge();
-                }
-            }
-            let q = node.charge();
-            let node = &mut self.nodes[c];
-            (node.mx, node.my) = if q > 0.0 {
-                (mx / q, my / q)
-            } else {
-                (0.0, 0.0)
-            };
+        let top = self.nodes.len();
+        let (entries, sorted) = (&self.entries, &self.sorted);
+        parallel::for_each(&mut subtrees, Vec::new, |work, (root, nodes)| {
+            let (_, first, count, depth, half) = *root;
+            nodes.clear();
+            nodes.push(Node {
+                first,
+                count,
+                ..Node::square(half)
+            });
+            work.clear();
+            work.push((0, first, count, depth, half));
+            split_cells(entries, nodes, work, u32::MAX, &mut Vec::new());
+            let all = 0..nodes.len();
+            sum_charges(nodes, sorted, all);
+        });
+        // Local cell `i > 0` of a subtree goes to `offset + i`, the subtrees' cells in
+        // order after the top's; copied side by side.
+        let mut offsets = Vec::with_capacity(subtrees.len());
+        let mut end = top;
+        for (_, local) in &subtrees {
+            offsets.push(end as u32 - 1);
+            end += local.len() - 1;
         }
+        self.nodes.resize(end, Node::default());
+        let ranges = offsets
+            .iter()
+            .zip(&subtrees)
+            .map(|(&offset, (_, local))| offset as usize + 1..offset as usize + local.len());
+        let mut copies: Vec<_> = parallel::split_ranges(&mut self.nodes, ranges)
+            .into_iter()
+            .zip(&subtrees)
+            .zip(&offsets)
+            .collect();
+        parallel::for_each(
+            &mut copies,
+            || (),
+            |(), (((_, to), (_, local)), offset)| {
+                for (to, node) in to.iter_mut().zip(&local[1..]) {
+                    *to = moved(node, **offset);
+                }
+            },
+        );
+        for (((c, ..), local), &offset) in subtrees.iter().zip(&offsets) {
+            self.nodes[*c as usize] = moved(&local[0], offset);
+        }
+        self.subtrees = subtrees;
+        sum_charges(&mut self.nodes, &self.sorted, 0..top);
     }
 
     /// The repulsion on point `i` of the last [`build`](Self::build): the sum over
@@ -342,3 +451,6 @@ impl Query {
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

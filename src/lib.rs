@@ -64,18 +64,20 @@
 //! - `petgraph`: `CanvasSceneInput::from_petgraph` and `from_petgraph_with` for any
 //!   petgraph graph (`&Graph`, `&StableGraph`, `&GraphMap`) with its own node ids, and
 //!   `pub use petgraph` (0.8, the version egui_graphs builds on).
-//! - `parallel`: the layout's own Barnes–Hut repulsion, its contacts' pair search and
-//!   the stress terms on rayon's pool, and rapier's own parallel parts (its solver).
-//!   The layout's work is cut into pieces that do not depend on the thread count, so a
-//!   layout whose contacts are the layout's own ([`RapierLayoutConfig::force_directed`],
-//!   [`RapierLayoutConfig::stress`]) is bit-identical on any number of threads and to a
-//!   build without the feature; with rapier's contacts or joints, rapier decides (see
-//!   `docs/performance.md`). `step` runs on the pool of the thread that calls it:
-//!   rayon's global pool, or a pool of the host's own (`rayon::ThreadPool::install`,
-//!   with rayon among the host's dependencies). A [`LayoutWorker`] steps on a pool of
-//!   its own with one thread fewer than the machine has cores, so the UI thread keeps a
-//!   core (`LayoutWorker::spawn_on_threads` chooses the count). The contacts' passes
-//!   and the edge springs stay on the calling thread.
+//! - `parallel`: the layout's own forces (Barnes–Hut repulsion, springs, stress terms)
+//!   and contacts (pair search, Gauss–Seidel passes) on rayon's pool, and rapier's own
+//!   parallel parts (its solver). The layout's work is cut into pieces that do not
+//!   depend on the thread count, so a layout whose contacts are the layout's own
+//!   ([`RapierLayoutConfig::force_directed`], [`RapierLayoutConfig::stress`]) is
+//!   bit-identical on any number of threads. Up to 8,192 contact pairs a substep it is
+//!   also bit-identical to a build without the feature; beyond, the passes solve the
+//!   pairs block by block, a different order and the same picture. With rapier's
+//!   contacts or joints, rapier decides (see `docs/performance.md`). `step` runs on the
+//!   pool of the thread that calls it: rayon's global pool, or a pool of the host's own
+//!   (`rayon::ThreadPool::install`, with rayon among the host's dependencies). A
+//!   [`LayoutWorker`] steps on a pool of its own with one thread fewer than the
+//!   machine has cores, so the UI thread keeps a core
+//!   (`LayoutWorker::spawn_on_threads` chooses the count).
 //! - `enhanced-determinism`: rapier's cross-platform bit-exact math.
 //!
 //! ## FAQ
@@ -148,6 +150,11 @@
 //! [`Cooling::first_contact_heat`] (0.3: about 0.35 s under `stress()`, 0.8 s under
 //! `force_directed()`): a fresh start moving fast through thousands of contact pairs
 //! would cost most of the step. Set it to `None` for contacts from the first frame.
+//!
+//! **Where does a frame's time go?** [`RapierLayout::set_profiling`] and
+//! [`RapierLayout::profile`]: a [`StepProfile`] splits the calls' time into the layout's
+//! own forces, its contacts, rapier's step and the rest of the call (matching, sync,
+//! deltas). Off by default; then a call reads no clock.
 #![deny(missing_docs)]
 
 mod adapter;

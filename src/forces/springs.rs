@@ -288,19 +288,79 @@ struct LinkBodies<'a> {
 /// resistance (`None`: nothing).
 type EndPull = Option<(Vector2D<f32>, Option<f32>)>;
 
+/// How a link pulls, before it is shared between its ends.
+enum Pulled {
+    /// Nothing (neither end pushed, no position, no length).
+    Nothing,
+    /// The link bias's uneven part alone, the same force on both ends' springs.
+    Uneven(Vector2D<f32>),
+    /// A spring applied as forces: end `a` takes `direction × pull × part` for its
+    /// part, end `b` the opposite for its own, each with `resistance × part`.
+    Forces {
+        direction: Vector2D<f32>,
+        pull: f32,
+        resistance: f32,
+    },
+}
+
 impl Pull {
     /// Adds `link`'s pull on its pushed ends to `out`.
     #[inline]
     fn apply(&self, link: &Link, bodies: LinkBodies, out: &mut ForceSums) {
-        let ends = self.ends(link, bodies);
-        for (end, pull) in [link.a, link.b].into_iter().zip(ends) {
-            add(&mut out.springs, &mut out.resistance, end as usize, pull);
+        let (a, b) = (link.a as usize, link.b as usize);
+        match self.pulled(link, bodies) {
+            Pulled::Nothing => {}
+            Pulled::Uneven(f) => {
+                if f.is_finite() {
+                    out.springs[a] += f;
+                    out.springs[b] += f;
+                }
+            }
+            Pulled::Forces {
+                direction,
+                pull,
+                resistance,
+            } => {
+                for (end, toward, part) in self.parts(link, direction) {
+                    let f = toward * (pull * part);
+                    if bodies.pushed[end] && f.is_finite() {
+                        out.springs[end] += f;
+                        out.resistance[end] += resistance * part;
+                    }
+                }
+            }
         }
     }
 
-    /// What `link` adds to the sums of its ends `a` and `b`.
-    #[inline]
+    /// What `link` adds to the sums of its ends `a` and `b`, as [`apply`](Self::apply)
+    /// adds it.
     fn ends(&self, link: &Link, bodies: LinkBodies) -> [EndPull; 2] {
+        match self.pulled(link, bodies) {
+            Pulled::Nothing => [None; 2],
+            Pulled::Uneven(f) => [f.is_finite().then_some((f, None)); 2],
+            Pulled::Forces {
+                direction,
+                pull,
+                resistance,
+            } => self.parts(link, direction).map(|(end, toward, part)| {
+                let f = toward * (pull * part);
+                (bodies.pushed[end] && f.is_finite()).then_some((f, Some(resistance * part)))
+            }),
+        }
+    }
+
+    /// The ends of `link` with the direction each is pulled along and its part.
+    #[inline(always)]
+    fn parts(&self, link: &Link, direction: Vector2D<f32>) -> [(usize, Vector2D<f32>, f32); 2] {
+        [
+            (link.a as usize, direction, 1.0 + self.gain * link.share),
+            (link.b as usize, -direction, 1.0 - self.gain * link.share),
+        ]
+    }
+
+    /// How `link` pulls this substep.
+    #[inline(always)]
+    fn pulled(&self, link: &Link, bodies: LinkBodies) -> Pulled {
         let Self {
             scale,
             gain,
@@ -309,43 +369,38 @@ impl Pull {
         let dt = bodies.dt;
         let (a, b) = (link.a as usize, link.b as usize);
         let (Some(&pa), Some(&pb)) = (bodies.points.get(a), bodies.points.get(b)) else {
-            return [None; 2];
+            return Pulled::Nothing;
         };
         if !(bodies.pushed[a] || bodies.pushed[b]) {
             // Neither end moves this substep (asleep, held or fixed), and only the
             // pushed bodies' sums are read: a resting graph's springs cost a check.
-            return [None; 2];
+            return Pulled::Nothing;
         }
         let d = pb - pa;
         let length = d.length();
         if !(length > 1e-3 && length.is_finite()) {
-            return [None; 2];
+            return Pulled::Nothing;
         }
         let k = (link.stiffness * scale).min(link.cap);
         if !as_forces {
             // The joint pulls evenly: add the uneven part only.
-            let f = d * (gain * link.share * k * (length - link.rest_length) / length);
-            let end = f.is_finite().then_some((f, None));
-            return [end; 2];
+            return Pulled::Uneven(
+                d * (gain * link.share * k * (length - link.rest_length) / length),
+            );
         }
         let direction = d / length;
         let c = link.damping * scale;
         let closing = (bodies.velocities[b] - bodies.velocities[a]).dot(direction);
-        let pull = k * (length - link.rest_length) + c * closing;
-        let resistance = dt * dt * k + dt * c;
-        [
-            (a, direction, 1.0 + gain * link.share),
-            (b, -direction, 1.0 - gain * link.share),
-        ]
-        .map(|(end, toward, part)| {
-            let f = toward * (pull * part);
-            (bodies.pushed[end] && f.is_finite()).then_some((f, Some(resistance * part)))
-        })
+        Pulled::Forces {
+            direction,
+            pull: k * (length - link.rest_length) + c * closing,
+            resistance: dt * dt * k + dt * c,
+        }
     }
 }
 
 /// Adds one end's pull to the sums of body `s`.
-#[inline]
+#[inline(always)]
 fn add(springs: &mut [Vector2D<f32>], resistance: &mut [f32], s: usize, pull: EndPull) {
     if let Some((f, r)) = pull {
         springs[s] += f;

@@ -88,14 +88,15 @@ const SUBTREE_DEPTH: u32 = 3;
 
 /// Splits the cells of `work` depth first: a cell's quadrants are the four runs of its
 /// points by the code's two bits at its depth; their cells go at the end of `nodes`.
-/// Cells at depth `stop` are left whole and listed in `subtrees`, each with an empty
-/// buffer for its own cells.
+/// Cells at depth `stop` are left whole and listed in `subtrees` from `*listed` on (each
+/// with a buffer for its own cells, kept from earlier builds where there is one).
 fn split_cells(
     entries: &[(u64, u32)],
     nodes: &mut Vec<Node>,
     work: &mut Vec<Work>,
     stop: u32,
     subtrees: &mut Vec<(Work, Vec<Node>)>,
+    listed: &mut usize,
 ) {
     while let Some((c, first, count, depth, half)) = work.pop() {
         nodes[c as usize].first = first;
@@ -104,7 +105,12 @@ fn split_cells(
             continue;
         }
         if depth == stop {
-            subtrees.push(((c, first, count, depth, half), Vec::new()));
+            let root = (c, first, count, depth, half);
+            match subtrees.get_mut(*listed) {
+                Some(subtree) => subtree.0 = root,
+                None => subtrees.push((root, Vec::new())),
+            }
+            *listed += 1;
             continue;
         }
         let shift = 2 * (MAX_DEPTH - 1 - depth);
@@ -303,14 +309,16 @@ impl ManyBody {
             u32::MAX
         };
         let mut subtrees = std::mem::take(&mut self.subtrees);
-        subtrees.clear();
+        let mut listed = 0;
         split_cells(
             &self.entries,
             &mut self.nodes,
             &mut work,
             stop,
             &mut subtrees,
+            &mut listed,
         );
+        subtrees.truncate(listed);
         self.work = work;
         let top = self.nodes.len();
         let (entries, sorted) = (&self.entries, &self.sorted);
@@ -324,7 +332,7 @@ impl ManyBody {
             });
             work.clear();
             work.push((0, first, count, depth, half));
-            split_cells(entries, nodes, work, u32::MAX, &mut Vec::new());
+            split_cells(entries, nodes, work, u32::MAX, &mut Vec::new(), &mut 0);
             let all = 0..nodes.len();
             sum_charges(nodes, sorted, all);
         });

@@ -62,79 +62,22 @@ struct Lane<'a> {
     pairs: &'a mut [Pair],
     impulses: &'a mut [f32],
     velocity: &'a mut [Vector2D<f32>],
-    sleeping: &'a mut [bool],
-    inverse_mass: &'a mut [f32],
-    /// A sleeping body's inverse mass once it wakes.
-    wake_inverse_mass: &'a [f32],
-    /// The bodies woken (local indices), in the order they woke.
-    woken: Vec<u32>,
+    wake: Wake<'a>,
     /// The largest change of a pair's relative speed.
     largest: f32,
 }
 
+/// What waking a lane's bodies reads and writes, by the lane's own index.
+struct Wake<'a> {
+    sleeping: &'a mut [bool],
+    inverse_mass: &'a mut [f32],
+    /// A sleeping body's inverse mass once it wakes.
+    wake_inverse_mass: &'a [f32],
+    /// The bodies woken (local indices of the whole order), in the order they woke.
+    woken: Vec<u32>,
+}
+
 impl Lane<'_> {
-    /// Pair `k` of the lane: the change of its relative normal speed that keeps it from
-    /// closing beyond touching (and with `PUSH`, parts an overlap), shared between its
-    /// bodies. Wakes a sleeping body pushed into.
-    ///
-    /// NOTE: written without branches on the pair's values (selects instead): whether a
-    /// pair touches, pushes or holds is all but random from one pair to the next, and a
-    /// mispredicted branch a pair cost more than its arithmetic (a third of a pass).
-    /// [`push`] branches only on whether both bodies hold, which is rare.
-    #[inline(always)]
-    fn solve<const PUSH: bool>(&mut self, k: usize, rule: PassRule) {
-        let pair = self.pairs[k];
-        let impulse = self.impulses[k];
-        let (a, b) = (pair.a as usize - self.first, pair.b as usize - self.first);
-        let closing = (self.velocity[b] - self.velocity[a]).dot(pair.normal);
-        let s = pair.separation;
-        // Apart: may close the gap within the substep, no more.
-        let apart = -(closing + s * rule.inverse_dt);
-        let touching = if PUSH {
-            let soft = rule.soft;
-            let bias = (soft.bias_rate * s).max(-MAX_PUSH_SPEED);
-            -(closing + bias) * soft.mass_scale - soft.impulse_scale * impulse
-        } else {
-            -closing
-        };
-        let wanted = if s > 0.0 { apart } else { touching };
-        if rule.sleepers && wanted > 0.0 && (self.sleeping[a] || self.sleeping[b]) {
-            let neither = pair.share_a + pair.share_b == 0.0;
-            if wanted > WAKE_SPEED || neither || s < -SLEEPING_OVERLAP {
-                self.wake(k, (a, b));
-            }
-        }
-        let change = wanted.max(-impulse);
-        push(
-            &self.pairs[k],
-            &mut self.impulses[k],
-            self.velocity,
-            (a, b),
-            change,
-        );
-        self.largest = self.largest.max(change.abs());
-    }
-
-    /// A sleeping body of pair `k` pushed into, or overlapped, wakes and gives way (one
-    /// that an awake body only rests against, more slowly than a body falls asleep,
-    /// stays asleep), and the pair's shares follow.
-    #[cold]
-    fn wake(&mut self, k: usize, bodies: (usize, usize)) {
-        for l in [bodies.0, bodies.1] {
-            if self.sleeping[l] {
-                self.sleeping[l] = false;
-                self.inverse_mass[l] = self.wake_inverse_mass[l];
-                self.woken.push((self.first + l) as u32);
-            }
-        }
-        let (wa, wb) = (self.inverse_mass[bodies.0], self.inverse_mass[bodies.1]);
-        let total = wa + wb;
-        if total > 0.0 {
-            let pair = &mut self.pairs[k];
-            (pair.share_a, pair.share_b) = (wa / total, wb / total);
-        }
-    }
-
     /// The lane's own pairs, [`STREAMS`] far-apart runs of them at once, a pair of each
     /// in turn: consecutive pairs of one run share a body, so each waits on the last
     /// one's velocity, while pairs of different runs (far apart in the grid's order)
@@ -142,16 +85,112 @@ impl Lane<'_> {
     /// pass on `random_n100000_e250000`). Pairs reaching past the lane's bodies are
     /// skipped (`whole`: none do).
     fn own_pairs<const PUSH: bool>(&mut self, rule: PassRule, whole: bool) {
-        let count = self.pairs.len();
-        let end = (self.first + self.velocity.len()) as u32;
+        // NOTE: the slices as locals, so the loop keeps them in registers.
+        let Self {
+            first,
+            pairs,
+            impulses,
+            velocity,
+            wake,
+            largest,
+        } = self;
+        let (first, pairs, impulses, velocity) =
+            (*first, &mut **pairs, &mut **impulses, &mut **velocity);
+        let count = pairs.len();
+        let end = (first + velocity.len()) as u32;
         let stride = count.div_ceil(STREAMS);
+        let mut most = *largest;
         for i in 0..stride {
             for run in 0..STREAMS {
                 let k = run * stride + i;
-                if k < count && (whole || self.pairs[k].b < end) {
-                    self.solve::<PUSH>(k, rule);
+                if k < count && (whole || pairs[k].b < end) {
+                    let change = solve::<PUSH>(pairs, impulses, velocity, wake, first, k, rule);
+                    most = most.max(change);
                 }
             }
+        }
+        *largest = most;
+    }
+
+    /// The pairs `listed`, in order.
+    fn listed<const PUSH: bool>(&mut self, listed: &[u32], rule: PassRule) {
+        let Self {
+            first,
+            pairs,
+            impulses,
+            velocity,
+            wake,
+            largest,
+        } = self;
+        for &k in listed {
+            let change = solve::<PUSH>(pairs, impulses, velocity, wake, *first, k as usize, rule);
+            *largest = largest.max(change);
+        }
+    }
+}
+
+/// Pair `k` of a lane whose first body is `first`: the change of its relative normal
+/// speed that keeps it from closing beyond touching (and with `PUSH`, parts an
+/// overlap), shared between its bodies; returns its size. Wakes a sleeping body pushed
+/// into.
+///
+/// NOTE: written without branches on the pair's values (selects instead): whether a
+/// pair touches, pushes or holds is all but random from one pair to the next, and a
+/// mispredicted branch a pair cost more than its arithmetic (a third of a pass).
+/// [`push`] branches only on whether both bodies hold, which is rare.
+#[inline(always)]
+fn solve<const PUSH: bool>(
+    pairs: &mut [Pair],
+    impulses: &mut [f32],
+    velocity: &mut [Vector2D<f32>],
+    wake: &mut Wake<'_>,
+    first: usize,
+    k: usize,
+    rule: PassRule,
+) -> f32 {
+    let pair = pairs[k];
+    let impulse = impulses[k];
+    let (a, b) = (pair.a as usize - first, pair.b as usize - first);
+    let closing = (velocity[b] - velocity[a]).dot(pair.normal);
+    let s = pair.separation;
+    // Apart: may close the gap within the substep, no more.
+    let apart = -(closing + s * rule.inverse_dt);
+    let touching = if PUSH {
+        let soft = rule.soft;
+        let bias = (soft.bias_rate * s).max(-MAX_PUSH_SPEED);
+        -(closing + bias) * soft.mass_scale - soft.impulse_scale * impulse
+    } else {
+        -closing
+    };
+    let wanted = if s > 0.0 { apart } else { touching };
+    if rule.sleepers && wanted > 0.0 && (wake.sleeping[a] || wake.sleeping[b]) {
+        let neither = pair.share_a + pair.share_b == 0.0;
+        if wanted > WAKE_SPEED || neither || s < -SLEEPING_OVERLAP {
+            wake.pair(&mut pairs[k], first, (a, b));
+        }
+    }
+    let change = wanted.max(-impulse);
+    push(&pairs[k], &mut impulses[k], velocity, (a, b), change);
+    change.abs()
+}
+
+impl Wake<'_> {
+    /// A sleeping body of `pair` (lane indices `bodies`) pushed into, or overlapped,
+    /// wakes and gives way (one that an awake body only rests against, more slowly than
+    /// a body falls asleep, stays asleep), and the pair's shares follow.
+    #[cold]
+    fn pair(&mut self, pair: &mut Pair, first: usize, bodies: (usize, usize)) {
+        for l in [bodies.0, bodies.1] {
+            if self.sleeping[l] {
+                self.sleeping[l] = false;
+                self.inverse_mass[l] = self.wake_inverse_mass[l];
+                self.woken.push((first + l) as u32);
+            }
+        }
+        let (wa, wb) = (self.inverse_mass[bodies.0], self.inverse_mass[bodies.1]);
+        let total = wa + wb;
+        if total > 0.0 {
+            (pair.share_a, pair.share_b) = (wa / total, wb / total);
         }
     }
 }
@@ -266,10 +305,12 @@ impl Collide {
                         pairs,
                         impulses,
                         velocity,
-                        sleeping,
-                        inverse_mass: mass,
-                        wake_inverse_mass: &wake_inverse_mass[range],
-                        woken: Vec::new(),
+                        wake: Wake {
+                            sleeping,
+                            inverse_mass: mass,
+                            wake_inverse_mass: &wake_inverse_mass[range],
+                            woken: Vec::new(),
+                        },
                         largest: 0.0,
                     }
                 },
@@ -289,7 +330,7 @@ impl Collide {
         let mut woken = Vec::new();
         for lane in lanes {
             largest = largest.max(lane.largest);
-            woken.extend(lane.woken);
+            woken.extend(lane.wake.woken);
         }
         if !across.is_empty() {
             let mut lane = Lane {
@@ -297,16 +338,16 @@ impl Collide {
                 pairs,
                 impulses,
                 velocity,
-                sleeping,
-                inverse_mass,
-                wake_inverse_mass,
-                woken,
+                wake: Wake {
+                    sleeping,
+                    inverse_mass,
+                    wake_inverse_mass,
+                    woken,
+                },
                 largest,
             };
-            for &k in across.iter() {
-                lane.solve::<PUSH>(k as usize, rule);
-            }
-            (largest, woken) = (lane.largest, lane.woken);
+            lane.listed::<PUSH>(across, rule);
+            (largest, woken) = (lane.largest, lane.wake.woken);
         }
         (largest, woken)
     }

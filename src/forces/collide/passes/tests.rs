@@ -130,15 +130,16 @@ fn blocks_solve_every_pair_in_one_gauss_seidel_order() {
             pairs: &mut c.pairs,
             impulses: &mut c.impulses,
             velocity: &mut c.velocity,
-            sleeping: &mut c.sleeping,
-            inverse_mass: &mut c.inverse_mass,
-            wake_inverse_mass: &c.wake_inverse_mass,
-            woken: Vec::new(),
+            wake: Wake {
+                sleeping: &mut c.sleeping,
+                inverse_mass: &mut c.inverse_mass,
+                wake_inverse_mass: &c.wake_inverse_mass,
+                woken: Vec::new(),
+            },
             largest: 0.0,
         };
-        for &k in &order {
-            lane.solve::<false>(k, rule());
-        }
+        let order: Vec<u32> = order.iter().map(|&k| k as u32).collect();
+        lane.listed::<false>(&order, rule());
     }
     let (_, mut woken) = blocked.pass_with::<false>(rule());
     let bits = |c: &Collide| -> Vec<[u32; 2]> {

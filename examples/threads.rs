@@ -1,8 +1,9 @@
 //! The layout's step on rayon pools of 1 and 2 threads (feature `parallel`): frames
 //! 30..30+N of a layout from the scene file, in pools built alternately, best of three
-//! runs each (or `runs`), and the ratio; for the whole frame and for the stages a
-//! [`StepProfile`] tells apart (the layout's own forces, its contacts, rapier's step,
-//! and the rest of the call: matching, sync in and out, deltas).
+//! runs each (or `runs`; each figure its own best), and the ratio; for the whole frame
+//! and for the stages a [`StepProfile`] tells apart (the layout's own forces, its
+//! contacts, rapier's step, and the rest of the call: matching, sync in and out,
+//! deltas).
 //!
 //! `cargo run --release --features parallel --example threads -- [scene] [preset] [frames] [runs]`
 //! (defaults `n10000_e25000 force_directed 240 3`; `preset` is `force_directed` or
@@ -104,7 +105,7 @@ fn main() {
     let name = args.next().unwrap_or_else(|| "n10000_e25000".into());
     let preset = args.next().unwrap_or_else(|| "force_directed".into());
     let frames: usize = args.next().and_then(|f| f.parse().ok()).unwrap_or(240);
-    let runs: usize = args.next().and_then(|r| r.parse().ok()).unwrap_or(3);
+    let runs: usize = args.next().and_then(|r| r.parse().ok()).unwrap_or(3).max(1);
     let config = match preset.as_str() {
         "stress" => RapierLayoutConfig::stress(),
         _ => RapierLayoutConfig::force_directed(),

@@ -69,8 +69,8 @@
 //!   parallel parts (its solver). The layout's work is cut into pieces that do not
 //!   depend on the thread count, so a layout whose contacts are the layout's own
 //!   ([`RapierLayoutConfig::force_directed`], [`RapierLayoutConfig::stress`]) is
-//!   bit-identical on any number of threads. Up to 8,192 contact pairs a substep it is
-//!   also bit-identical to a build without the feature; beyond, the passes solve the
+//!   bit-identical on any number of threads. With fewer than 8,192 contact pairs a
+//!   substep it is also bit-identical to a build without the feature; beyond, the passes solve the
 //!   pairs block by block, a different order and the same picture. With rapier's
 //!   contacts or joints, rapier decides (see `docs/performance.md`). `step` runs on the
 //!   pool of the thread that calls it: rayon's global pool, or a pool of the host's own

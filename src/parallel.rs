@@ -3,10 +3,12 @@
 //! on, so a force only says which of its parts are independent.
 //!
 //! Every use splits its work into pieces that do not depend on the thread count (a
-//! Barnes–Hut group, a fixed run of the grid's bodies or of the stress nodes) and puts
-//! their results together in the pieces' order, so what a piece computes, and the sum
-//! it ends in, are the same on any number of threads: with the feature on or off, the
-//! forces are bit-identical.
+//! Barnes–Hut group or subtree, a fixed run of links, bodies, pairs or stress nodes)
+//! and puts their results together in the pieces' order, so what a piece computes, and
+//! the sum it ends in, are the same on any number of threads, and with the feature on
+//! or off. The contacts' passes (`forces/collide/passes.rs`) are the one exception to
+//! the last: under the feature they solve the pairs block by block, an order fixed by
+//! the pairs alone, which differs from the serial build's from two blocks on.
 
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;

@@ -2,8 +2,8 @@
 //! springs, the stress terms), its contacts (the pair search and the Gauss–Seidel
 //! passes, block by block) and rapier's solver run on rayon's pool. The work is cut into
 //! pieces that do not depend on the thread count and joined in order, so a layout is
-//! bit-identical on one thread and on several. Up to 8,192 contact pairs (one block of
-//! the passes) it is also the same bits as a build without the feature (the
+//! bit-identical on one thread and on several. With fewer than 8,192 contact pairs (one
+//! block of the passes) it is also the same bits as a build without the feature (the
 //! `fingerprint` example); beyond, the passes solve the pairs in the blocks' order.
 //!
 //! Run with `cargo test --features parallel --test parallel`.

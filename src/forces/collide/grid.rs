@@ -2,10 +2,11 @@
 //! sorted by key, searched in the same and the neighbouring cells (and along the path of
 //! a body that moves further than a cell allows). The grid's order of the bodies is the
 //! order the separation works in (`pairs.rs`), so neighbours sit close in memory. The
-//! separation itself is in `mod.rs`.
+//! separation itself is in `mod.rs` and `passes.rs`.
 
 use euclid::default::{Point2D, Vector2D};
 
+use super::pairs::{PAIRS_AT_LEAST, PAIRS_PER_BODY};
 use crate::parallel;
 
 /// A cell's key: row in the high half, column in the low half, both offset to be
@@ -17,6 +18,13 @@ fn key(x: i64, y: i64) -> u64 {
 /// Fast bodies a run of the search along their paths takes (fixed, so the pairs found do
 /// not depend on the thread count).
 const FAST_RUN: usize = 128;
+
+/// The most pairs a run of `bodies` fast bodies holds before it stops and is searched
+/// again in order: what the pair search allows its bodies (`pairs.rs`), so the runs
+/// side by side take no more memory than the search in order may.
+fn run_bound(bodies: usize) -> usize {
+    PAIRS_PER_BODY * bodies + PAIRS_AT_LEAST
+}
 /// Which motion a cell allows, as a share of the bodies: the rest search along their path.
 const USUAL_SHARE: f64 = 0.9;
 
@@ -232,34 +240,63 @@ impl Grid {
                 .push((lo.x - r.x, hi.x + r.x, lo.y - r.y, hi.y + r.y, a as u32));
         }
         let fast = self.swept.len();
-        let mut runs: Vec<(std::ops::Range<usize>, Vec<T>)> = (0..fast.div_ceil(FAST_RUN))
-            .map(|r| (r * FAST_RUN..((r + 1) * FAST_RUN).min(fast), Vec::new()))
+        let start = out.len();
+        // Each run searches until it holds what its bodies may (a far denser crowd than
+        // disks can be stops it early, and it is searched again below, in order).
+        let mut runs: Vec<(std::ops::Range<usize>, Vec<T>, bool)> = (0..fast.div_ceil(FAST_RUN))
+            .map(|r| {
+                (
+                    r * FAST_RUN..((r + 1) * FAST_RUN).min(fast),
+                    Vec::new(),
+                    true,
+                )
+            })
             .collect();
         let grid = &*self;
         parallel::for_each(
             &mut runs,
             || (),
-            |(), (bodies, found)| {
+            |(), (bodies, found, complete)| {
+                let most = run_bound(bodies.len()).min(room);
                 for &(.., a) in &grid.swept[bodies.clone()] {
                     let a = a as usize;
-                    let more = grid.along_path(points[a], motion[a], |b| {
+                    *complete = grid.along_path(points[a], motion[a], |b| {
                         grid.near(a, b) || {
                             found.extend(pair(a.min(b) as u32, a.max(b) as u32));
-                            found.len() < room
+                            found.len() < most
                         }
                     });
-                    if !more {
+                    if !*complete {
                         return;
                     }
                 }
             },
         );
-        let start = out.len();
-        for (_, found) in runs {
+        let full = |out: &Vec<T>| out.len() >= start + room;
+        let mut resume = None;
+        for (bodies, found, complete) in runs {
+            if !complete {
+                resume = Some(bodies.start);
+                break;
+            }
             let left = (start + room).saturating_sub(out.len());
             out.extend(found.into_iter().take(left));
-            if out.len() >= start + room {
+            if full(out) {
                 return;
+            }
+        }
+        if let Some(from) = resume {
+            for &(.., a) in &self.swept[from..] {
+                let a = a as usize;
+                let more = self.along_path(points[a], motion[a], |b| {
+                    self.near(a, b) || {
+                        out.extend(pair(a.min(b) as u32, a.max(b) as u32));
+                        !full(out)
+                    }
+                });
+                if !more {
+                    return;
+                }
             }
         }
         self.swept

@@ -1,7 +1,7 @@
 //! The bodies and pairs of one substep's disk separation: bodies gathered in the grid's
 //! order (`grid.rs`), the pairs that may touch found among them, and each pair started
 //! from the impulse it ended the last substep with (warm starting). The passes that
-//! solve the pairs are in `mod.rs`.
+//! solve the pairs are in `passes.rs`.
 //!
 //! Working in the grid's order rather than by world slot keeps a pair's two bodies close
 //! in memory (the same or a neighbouring cell): at 100,000 bodies the per-body arrays no
@@ -35,8 +35,8 @@ fn comes_within(d: Vector2D<f32>, relative: Vector2D<f32>, within: f32) -> bool 
 /// scatter's first contacts 16), and a bound on the memory and time a crowd denser than
 /// disks can be (everything at one point) would otherwise take: without it, contacts
 /// from the first frame of a 100,000-node graph took over 24 GB.
-const PAIRS_PER_BODY: usize = 32;
-const PAIRS_AT_LEAST: usize = 4_096;
+pub(super) const PAIRS_PER_BODY: usize = 32;
+pub(super) const PAIRS_AT_LEAST: usize = 4_096;
 
 /// No local index: the body has no finite position, so it is in no pair.
 pub(super) const NONE: u32 = u32::MAX;

@@ -9,8 +9,8 @@
 //! threads: the blocks are cut by the pairs' count, never by the pool's size, so a pass
 //! gives the same bits on any number of threads.
 //!
-//! Without `parallel`, or with fewer pairs than two blocks hold, there is one block, and
-//! the passes solve the pairs in the order they always have.
+//! Without `parallel`, or with fewer than 8,192 pairs, there is one block, and the passes
+//! solve the pairs in the order they always have.
 
 use euclid::default::Vector2D;
 use std::hash::Hash;
@@ -20,8 +20,9 @@ use super::{Collide, Softness, MAX_PUSH_SPEED, SLEEPING_OVERLAP, STREAMS, WAKE_S
 use crate::parallel;
 use crate::world::RapierSceneWorld;
 
-/// The pairs a block holds at least: below this a block's work is not worth handing to
-/// another thread (about a fifth of a millisecond a substep for the passes).
+/// The pairs a substep holds for each block it is cut into (one block below twice this):
+/// fewer are not worth handing to another thread. The blocks are cut at bodies, so one
+/// may hold fewer, or none where a body holds more than a block's share.
 const PAIRS_PER_BLOCK: usize = 4_096;
 /// The most blocks (a power of two, as every block count is, so that 2, 4 or 8 threads
 /// get equal shares).

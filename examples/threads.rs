@@ -1,6 +1,8 @@
-//! The layout's step on rayon pools of 1 and 2 threads (feature `parallel`): frames
-//! 30..30+N of a layout from the scene file, in pools built alternately, best of three
-//! runs each (or `runs`; each figure its own best), and the ratio; for the whole frame
+//! The layout's step on rayon pools of 1 and 2 threads (feature `parallel`), the 2
+//! threads kept awake through the substeps (the default) and not
+//! (`RapierLayout::set_pool_awake`): frames 30..30+N of a layout from the scene file, in
+//! pools built in turn, best of three runs each (or `runs`; each figure its own best),
+//! and the ratios to 1 thread; for the whole frame
 //! and for the stages a [`StepProfile`] tells apart (the layout's own forces, its
 //! contacts, rapier's step, and the rest of the call: matching, sync in and out,
 //! deltas).
@@ -71,14 +73,21 @@ impl Run {
     }
 }
 
-/// One run of `frames` frames after the first `WARM`, in a pool of `threads`, and every
-/// node's final position as bits.
-fn time(name: &str, config: &RapierLayoutConfig, threads: usize, frames: usize) -> (Run, Vec<u32>) {
+/// One run of `frames` frames after the first `WARM`, in a pool of `threads` kept awake
+/// through the substeps or not (`RapierLayout::set_pool_awake`), and every node's final
+/// position as bits.
+fn time(
+    name: &str,
+    config: &RapierLayoutConfig,
+    (threads, awake): (usize, bool),
+    frames: usize,
+) -> (Run, Vec<u32>) {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
         .expect("a rayon pool");
     let mut host = Host::new(load(name), config.clone());
+    host.layout.set_pool_awake(awake);
     pool.install(|| {
         for _ in 0..WARM {
             host.frame(1.0 / 60.0);
@@ -110,29 +119,47 @@ fn main() {
         "stress" => RapierLayoutConfig::stress(),
         _ => RapierLayoutConfig::force_directed(),
     };
-    let (mut best, mut bits) = ([Run::INFINITE; 2], [Vec::new(), Vec::new()]);
+    // 1 thread; 2 threads awake through the substeps (the default); 2 threads that
+    // sleep between the parallel parts.
+    let pools = [(1, true), (2, true), (2, false)];
+    let (mut best, mut bits) = ([Run::INFINITE; 3], [Vec::new(), Vec::new(), Vec::new()]);
     for run in 0..runs {
-        for (k, threads) in [1, 2].into_iter().enumerate() {
-            let (measured, positions) = time(&name, &config, threads, frames);
+        for (k, pool) in pools.into_iter().enumerate() {
+            let (measured, positions) = time(&name, &config, pool, frames);
+            let asleep = if pool.1 { "" } else { ", asleep between parts" };
             println!(
-                "{name} {preset} run {run}: {threads} thread(s) {:.2} ms a frame",
-                measured.frame
+                "{name} {preset} run {run}: {} thread(s){asleep} {:.2} ms a frame",
+                pool.0, measured.frame
             );
             best[k] = best[k].best(measured);
             bits[k] = positions;
         }
     }
-    assert_eq!(bits[0], bits[1], "1 and 2 threads must give the same bits");
-    println!("stage     1 thread  2 threads  ratio  (ms a frame, best of {runs})");
-    for ((stage, one), (_, two)) in best[0].figures().into_iter().zip(best[1].figures()) {
-        println!("{stage:<9} {one:>8.2}  {two:>9.2}  {:>5.2}", two / one);
+    assert!(
+        bits[0] == bits[1] && bits[1] == bits[2],
+        "1 and 2 threads, awake or not, must give the same bits"
+    );
+    println!("stage     1 thread  2 threads  ratio  2 asleep  ratio  (ms a frame, best of {runs})");
+    let rows = best[0]
+        .figures()
+        .into_iter()
+        .zip(best[1].figures())
+        .zip(best[2].figures());
+    for (((stage, one), (_, two)), (_, asleep)) in rows {
+        println!(
+            "{stage:<9} {one:>8.2}  {two:>9.2}  {:>5.2}  {asleep:>8.2}  {:>5.2}",
+            two / one,
+            asleep / one
+        );
     }
     let own = |r: Run| r.forces + r.contacts;
     println!(
-        "threads: {name} {preset} best of {runs}: 1 thread {:.2} ms, 2 threads {:.2} ms, ratio {:.2}; own forces and contacts ratio {:.2} (same bits)",
+        "threads: {name} {preset} best of {runs}: 1 thread {:.2} ms, 2 threads {:.2} ms, ratio {:.2}; own forces and contacts ratio {:.2}; asleep between parts {:.2} and {:.2} (same bits)",
         best[0].frame,
         best[1].frame,
         best[1].frame / best[0].frame,
-        own(best[1]) / own(best[0])
+        own(best[1]) / own(best[0]),
+        best[2].frame / best[0].frame,
+        own(best[2]) / own(best[0])
     );
 }

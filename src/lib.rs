@@ -77,7 +77,10 @@
 //!   (`rayon::ThreadPool::install`, with rayon among the host's dependencies). A
 //!   [`LayoutWorker`] steps on a pool of its own with one thread fewer than the
 //!   machine has cores, so the UI thread keeps a core
-//!   (`LayoutWorker::spawn_on_threads` chooses the count).
+//!   (`LayoutWorker::spawn_on_threads` chooses the count). From 2,048 awake bodies on,
+//!   the pool's other threads stay awake through a call's substeps, taking its parts
+//!   as they come, rather than sleeping between them
+//!   ([`RapierLayout::set_pool_awake`] trades that back for idle cores).
 //! - `enhanced-determinism`: rapier's cross-platform bit-exact math.
 //!
 //! ## FAQ

@@ -21,19 +21,21 @@ fn run(scene: &str, config: RapierLayoutConfig, threads: usize, frames: usize) -
         .num_threads(threads)
         .build()
         .expect("a rayon pool");
-    pool.install(|| {
-        let mut host = Host::new(load_scene(scene), config);
-        (0..frames)
-            .map(|_| {
-                host.frame(FRAME);
-                host.scene
-                    .nodes
-                    .iter()
-                    .flat_map(|n| [n.position.x.to_bits(), n.position.y.to_bits()])
-                    .collect()
-            })
-            .collect()
-    })
+    pool.install(|| positions_after(Host::new(load_scene(scene), config), frames))
+}
+
+/// Every node's position, as bits, after each of `frames` frames of `host`.
+fn positions_after(mut host: Host<u32>, frames: usize) -> Vec<Vec<u32>> {
+    (0..frames)
+        .map(|_| {
+            host.frame(FRAME);
+            host.scene
+                .nodes
+                .iter()
+                .flat_map(|n| [n.position.x.to_bits(), n.position.y.to_bits()])
+                .collect()
+        })
+        .collect()
 }
 
 /// The first frame whose positions differ, with the first node that differs.
@@ -149,5 +151,50 @@ fn a_worker_on_a_pool_of_its_own_lays_a_ring_out() {
         (across - pinned).length() > 100.0,
         "opposite nodes of the ring {:?} apart",
         across - pinned
+    );
+}
+
+/// From 2,048 awake bodies on, the pool's other threads stay awake through a call's
+/// substeps unless the host says otherwise (`RapierLayout::set_pool_awake`). Awake or
+/// not, and called from a pool's thread or from a thread outside any pool (rayon's
+/// global pool then takes the parts), `3elt` (4,720 nodes) is the same bits: which
+/// thread takes which part changes nothing, and nothing waits for ever.
+#[test]
+fn keeping_the_pool_awake_changes_no_bit() {
+    let frames = 30;
+    let host = |awake: bool| {
+        let mut host = Host::new(load_scene("3elt"), RapierLayoutConfig::force_directed());
+        host.layout.set_pool_awake(awake);
+        host
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .build()
+        .expect("a rayon pool");
+    let awake = pool.install(|| positions_after(host(true), frames));
+    let asleep = pool.install(|| positions_after(host(false), frames));
+    assert!(
+        awake[0] != awake[frames - 1],
+        "nothing moved in {frames} frames"
+    );
+    assert_eq!(
+        first_difference(&awake, &asleep),
+        None,
+        "(frame, node) where a pool left to sleep first differs from one kept awake"
+    );
+    // From a thread of no pool: a deadlock between the caller and the threads kept
+    // awake would never answer, so the wait is bounded (far above the second or so the
+    // frames take).
+    let (sender, receiver) = std::sync::mpsc::channel();
+    let outside = host(true);
+    std::thread::spawn(move || sender.send(positions_after(outside, frames)));
+    let limit = std::time::Duration::from_secs(300);
+    let outside = receiver.recv_timeout(limit).unwrap_or_else(|e| {
+        panic!("frames called from outside any pool: no answer in {limit:?} ({e})")
+    });
+    assert_eq!(
+        first_difference(&awake, &outside),
+        None,
+        "(frame, node) where frames called from outside any pool first differ"
     );
 }

@@ -124,6 +124,8 @@ pub struct RapierLayout<N> {
     gravity: Vector2D<f32>,
     /// Built by [`RapierLayout::at_rest`]: the first world starts cold.
     cold_start: bool,
+    /// [`RapierLayout::set_pool_awake`].
+    pool_awake: bool,
 }
 
 impl<N> std::fmt::Debug for RapierLayout<N> {
@@ -176,6 +178,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             joint_dt: DEFAULT_TIMESTEP,
             gravity: Vector2D::zero(),
             cold_start: false,
+            pool_awake: true,
         }
     }
 
@@ -215,6 +218,34 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// switched profiling on; `None` while it is off.
     pub fn profile(&self) -> Option<StepProfile> {
         self.forces.profile
+    }
+
+    /// Under the `parallel` feature, whether the pool's other threads stay awake through
+    /// a call's substeps when 2,048 bodies or more are awake: they take the parallel
+    /// parts as they come and yield their cores between looks, where otherwise each
+    /// falls asleep between parts and takes 20 to 70 µs to wake for the next. A
+    /// `n10000_e25000` frame on two threads takes about a tenth less time awake (see
+    /// `docs/performance.md`); the cost is the other threads' cores, busy through the
+    /// serial parts of the substeps too (rapier's step among them). The results are the
+    /// same bits either way. Without the feature it does nothing.
+    ///
+    /// Default: on.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::RapierLayout;
+    /// let mut layout = RapierLayout::<u32>::default();
+    /// assert!(layout.pool_awake());
+    /// layout.set_pool_awake(false); // idle cores between the parallel parts
+    /// assert!(!layout.pool_awake());
+    /// ```
+    pub fn set_pool_awake(&mut self, on: bool) {
+        self.pool_awake = on;
+    }
+
+    /// Whether the pool stays awake through the substeps ([`set_pool_awake`](Self::set_pool_awake)).
+    pub fn pool_awake(&self) -> bool {
+        self.pool_awake
     }
 
     /// Whether `scene` and `extras` differ in topology (node set, edge set, pins) from

@@ -220,6 +220,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             joint_dt: snapshot.joint_dt,
             gravity: snapshot.gravity,
             cold_start: snapshot.cold_start,
+            // A setting of the host's, not of the layout's state.
+            pool_awake: self.pool_awake,
             ..Self::new(RapierLayoutConfig::default())
         };
         Ok(())

@@ -81,28 +81,37 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         if let Some(profile) = self.forces.profile.as_mut() {
             profile.substeps += u64::from(plan.substeps);
         }
-        for k in 0..plan.substeps {
-            drive_kinematic_bodies(world, &self.drives, k, plan.substeps);
-            if forces_on {
-                let law = HeatLaw {
-                    alpha: heat.scale,
-                    cooling: config.cooling,
-                    blend: world.spring_blend(),
-                };
-                self.forces
-                    .apply(world, config, law, heat.contact_softness, plan.substep_dt);
+        // Under `parallel`, the pool's other threads wait for the substeps' parts awake
+        // (`parallel.rs`; `RapierLayout::set_pool_awake`).
+        let awake = if self.pool_awake {
+            world.awake_body_count()
+        } else {
+            0
+        };
+        crate::parallel::with_pool_awake(awake, || {
+            for k in 0..plan.substeps {
+                drive_kinematic_bodies(world, &self.drives, k, plan.substeps);
+                if forces_on {
+                    let law = HeatLaw {
+                        alpha: heat.scale,
+                        cooling: config.cooling,
+                        blend: world.spring_blend(),
+                    };
+                    self.forces
+                        .apply(world, config, law, heat.contact_softness, plan.substep_dt);
+                }
+                if stale_ccd_in(world, &self.drives) {
+                    world.skip_ccd_next_step();
+                }
+                let watch = Stopwatch::start(&self.forces.profile);
+                world.step(gravity);
+                watch.stop(&mut self.forces.profile, |p| &mut p.rapier);
+                self.forces.settle(world, plan.substep_dt);
+                if !self.forces.targets.locks.is_empty() {
+                    hold_locked_axes(world, &self.forces.targets.locks);
+                }
             }
-            if stale_ccd_in(world, &self.drives) {
-                world.skip_ccd_next_step();
-            }
-            let watch = Stopwatch::start(&self.forces.profile);
-            world.step(gravity);
-            watch.stop(&mut self.forces.profile, |p| &mut p.rapier);
-            self.forces.settle(world, plan.substep_dt);
-            if !self.forces.targets.locks.is_empty() {
-                hold_locked_axes(world, &self.forces.targets.locks);
-            }
-        }
+        });
     }
 
     /// Takes the nodes rapier quarantined during this call's steps.

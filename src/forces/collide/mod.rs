@@ -32,6 +32,7 @@ use super::Bodies;
 use crate::config::ContactSoftness;
 use crate::world::RapierSceneWorld;
 
+mod gather;
 mod grid;
 mod pairs;
 mod passes;

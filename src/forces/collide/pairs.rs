@@ -255,58 +255,6 @@ impl Candidates<'_> {
 }
 
 impl Collide {
-    /// Puts the bodies (positions `points`, the rest in `self.by_slot`) in the grid's
-    /// order: fills `order`, `local` and the local arrays.
-    pub(super) fn take_in_grid_order(&mut self, points: &[Point2D<f32>]) {
-        let by_slot = &mut self.by_slot;
-        if by_slot.half.len() < by_slot.radius.len() {
-            let from = by_slot.half.len();
-            by_slot
-                .half
-                .extend(by_slot.radius[from..].iter().map(|&r| Vector2D::new(r, r)));
-        }
-        let slots = self.grid.sort(
-            points,
-            &self.by_slot.half,
-            &self.by_slot.motion,
-            &self.region,
-        );
-        self.order.clear();
-        self.order.extend(slots);
-        self.local.clear();
-        self.local.resize(points.len(), NONE);
-        let by_slot = &self.by_slot;
-        self.points.clear();
-        self.radius.clear();
-        self.inner.clear();
-        self.round.clear();
-        self.half.clear();
-        self.inverse_mass.clear();
-        self.velocity.clear();
-        self.motion.clear();
-        self.sleeping.clear();
-        for (l, &s) in self.order.iter().enumerate() {
-            let s = s as usize;
-            self.local[s] = l as u32;
-            self.points.push(points[s]);
-            self.radius.push(by_slot.radius[s]);
-            self.half.push(by_slot.half[s]);
-            self.inner
-                .push(by_slot.inner.get(s).copied().unwrap_or_default());
-            self.round
-                .push(by_slot.round.get(s).copied().unwrap_or(by_slot.radius[s]));
-            self.inverse_mass.push(by_slot.inverse_mass[s]);
-            self.velocity
-                .push(by_slot.velocity.get(s).copied().unwrap_or_default());
-            self.motion.push(by_slot.motion[s]);
-            self.sleeping
-                .push(by_slot.sleeping.get(s).copied().unwrap_or(false));
-        }
-        self.before.clear();
-        self.before.extend_from_slice(&self.velocity);
-        self.boxes = self.inner.iter().any(|&i| i != Vector2D::zero());
-    }
-
     /// The pairs that may touch, or come within `margin` of touching, each once,
     /// ordered by their local indices, and where each body's pairs start (`rows`).
     ///

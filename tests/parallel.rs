@@ -198,3 +198,54 @@ fn keeping_the_pool_awake_changes_no_bit() {
         "(frame, node) where frames called from outside any pool first differ"
     );
 }
+
+/// Two layouts stepped side by side on one pool of 2 threads (`rayon::join`, frame by
+/// frame), each handing the pool a thread to keep awake through its substeps while the
+/// other's parts run on the same threads: both finish with the same bits as each laid
+/// out alone. (A thread kept awake for one layout above the other's parts on its stack
+/// could hold both up; the wait is bounded so that a hang fails.)
+#[test]
+fn layouts_stepped_side_by_side_on_one_pool_keep_their_bits() {
+    let frames = 20;
+    let host = || Host::new(load_scene("3elt"), RapierLayoutConfig::force_directed());
+    let alone = run("3elt", RapierLayoutConfig::force_directed(), 2, frames);
+    let (sender, receiver) = std::sync::mpsc::channel();
+    let (mut first, mut second) = (host(), host());
+    std::thread::spawn(move || {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(2)
+            .build()
+            .expect("a rayon pool");
+        let bits = |host: &Host<u32>| -> Vec<u32> {
+            host.scene
+                .nodes
+                .iter()
+                .flat_map(|n| [n.position.x.to_bits(), n.position.y.to_bits()])
+                .collect()
+        };
+        let side_by_side: Vec<(Vec<u32>, Vec<u32>)> = pool.install(|| {
+            (0..frames)
+                .map(|_| {
+                    rayon::join(|| first.frame(FRAME), || second.frame(FRAME));
+                    (bits(&first), bits(&second))
+                })
+                .collect()
+        });
+        sender.send(side_by_side)
+    });
+    let limit = std::time::Duration::from_secs(300);
+    let side_by_side = receiver
+        .recv_timeout(limit)
+        .unwrap_or_else(|e| panic!("two layouts side by side: no answer in {limit:?} ({e})"));
+    let (first, second): (Vec<_>, Vec<_>) = side_by_side.into_iter().unzip();
+    assert_eq!(
+        first_difference(&alone, &first),
+        None,
+        "(frame, node) where the first of two layouts side by side differs from one alone"
+    );
+    assert_eq!(
+        first_difference(&alone, &second),
+        None,
+        "(frame, node) where the second of two layouts side by side differs from one alone"
+    );
+}

@@ -220,14 +220,15 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.forces.profile
     }
 
-    /// Under the `parallel` feature, whether the pool's other threads stay awake through
-    /// a call's substeps when 2,048 bodies or more are awake: they take the parallel
-    /// parts as they come and yield their cores between looks, where otherwise each
-    /// falls asleep between parts and takes 20 to 70 µs to wake for the next. A
+    /// Under the `parallel` feature, whether another thread of the pool stays awake
+    /// through a call's substeps when 2,048 bodies or more are awake: it takes the
+    /// parallel parts as they come and yields its core between looks, where otherwise
+    /// it falls asleep between parts and takes 20 to 70 µs to wake for the next. A
     /// `n10000_e25000` frame on two threads takes about a tenth less time awake (see
-    /// `docs/performance.md`); the cost is the other threads' cores, busy through the
-    /// serial parts of the substeps too (rapier's step among them). The results are the
-    /// same bits either way. Without the feature it does nothing.
+    /// `docs/performance.md`); the cost is that thread's core, busy through the serial
+    /// parts of the substeps too (rapier's step among them; it lets go after 2 ms
+    /// without work). The results are the same bits either way. Without the feature it
+    /// does nothing.
     ///
     /// Default: on.
     ///

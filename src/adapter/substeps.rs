@@ -81,8 +81,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         if let Some(profile) = self.forces.profile.as_mut() {
             profile.substeps += u64::from(plan.substeps);
         }
-        // Under `parallel`, the pool's other threads wait for the substeps' parts awake
-        // (`parallel.rs`; `RapierLayout::set_pool_awake`).
+        // Under `parallel`, another thread of the pool waits for the substeps' parts
+        // awake (`parallel/awake.rs`; `RapierLayout::set_pool_awake`).
         let awake = if self.pool_awake {
             world.awake_body_count()
         } else {

@@ -10,9 +10,9 @@
 //! the last: under the feature they solve the pairs block by block, an order fixed by
 //! the pairs alone, which differs from the serial build's from two blocks on.
 //!
-//! [`with_pool_awake`] keeps the pool's other threads awake through a call's substeps,
-//! so a part does not wait for a thread to wake; it changes which thread takes which
-//! piece, never what a piece computes.
+//! [`with_pool_awake`] (`awake.rs`) keeps another thread of the pool awake through a
+//! call's substeps, so a part does not wait for it to wake; it changes which thread
+//! takes which piece, never what a piece computes.
 
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;
@@ -87,85 +87,14 @@ pub(crate) fn split_ranges<T>(
     out
 }
 
-/// From this many awake bodies on, the pool's other threads are kept awake through a
-/// call's substeps ([`with_pool_awake`]).
 #[cfg(feature = "parallel")]
-const AWAKE_FROM: usize = 2_048;
+mod awake;
+#[cfg(feature = "parallel")]
+pub(crate) use awake::with_pool_awake;
 
-/// Runs `f`, the substeps of a call with `awake` bodies awake. Under `parallel`, from
-/// [`AWAKE_FROM`] bodies on and with other threads in the pool, each of those threads
-/// waits for `f`'s parallel parts awake (taking what work it finds, and yielding its
-/// core to the system between looks) instead of going to sleep between them: a thread
-/// asleep takes 20 to 70 µs to wake, and a substep of 10,000 bodies holds about twenty
-/// parts, each of tens of µs. Which thread works on which part changes nothing in the
-/// results.
-pub(crate) fn with_pool_awake<R>(awake: usize, f: impl FnOnce() -> R) -> R {
-    #[cfg(feature = "parallel")]
-    {
-        let caller = rayon::current_thread_index();
-        let others = rayon::current_num_threads() - usize::from(caller.is_some());
-        if awake >= AWAKE_FROM && others > 0 {
-            let done = std::sync::atomic::AtomicBool::new(false);
-            return rayon::in_place_scope(|scope| {
-                for _ in 0..others {
-                    scope.spawn(|_| keep_awake(&done, caller));
-                }
-                // Set however `f` ends (a panic too), or the scope would wait for ever.
-                let _finish = Finish(&done);
-                f()
-            });
-        }
-    }
-    #[cfg(not(feature = "parallel"))]
-    let _ = awake;
+/// Runs `f` (the substeps of a call with `awake` bodies awake): without `parallel` there
+/// is no pool to keep awake.
+#[cfg(not(feature = "parallel"))]
+pub(crate) fn with_pool_awake<R>(_awake: usize, f: impl FnOnce() -> R) -> R {
     f()
-}
-
-/// Sets its flag when dropped.
-#[cfg(feature = "parallel")]
-struct Finish<'a>(&'a std::sync::atomic::AtomicBool);
-
-#[cfg(feature = "parallel")]
-impl Drop for Finish<'_> {
-    fn drop(&mut self) {
-        self.0.store(true, std::sync::atomic::Ordering::Release);
-    }
-}
-
-#[cfg(feature = "parallel")]
-thread_local! {
-    /// Whether this thread runs a [`keep_awake`] already.
-    static KEEPING: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
-}
-
-/// Takes the pool's work as it comes until `done`. Leaves at once on the thread that
-/// runs the substeps (`caller`; it picks a waiting job up only while it waits for a part
-/// of its own, and would then hold itself up) and on a thread that keeps awake already.
-#[cfg(feature = "parallel")]
-fn keep_awake(done: &std::sync::atomic::AtomicBool, caller: Option<usize>) {
-    use std::sync::atomic::Ordering;
-    if rayon::current_thread_index() == caller || KEEPING.get() {
-        return;
-    }
-    KEEPING.set(true);
-    // Cleared however the loop ends (a part that panics too).
-    let _kept = Kept;
-    while !done.load(Ordering::Acquire) {
-        match rayon::yield_now() {
-            Some(rayon::Yield::Executed) => {}
-            Some(rayon::Yield::Idle) => std::thread::yield_now(),
-            None => break,
-        }
-    }
-}
-
-/// Clears this thread's [`KEEPING`] when dropped.
-#[cfg(feature = "parallel")]
-struct Kept;
-
-#[cfg(feature = "parallel")]
-impl Drop for Kept {
-    fn drop(&mut self) {
-        KEEPING.set(false);
-    }
 }

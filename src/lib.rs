@@ -78,9 +78,9 @@
 //!   [`LayoutWorker`] steps on a pool of its own with one thread fewer than the
 //!   machine has cores, so the UI thread keeps a core
 //!   (`LayoutWorker::spawn_on_threads` chooses the count). From 2,048 awake bodies on,
-//!   another thread of the pool stays awake through a call's substeps, taking its parts
-//!   as they come, rather than sleeping between them
-//!   ([`RapierLayout::set_pool_awake`] trades that back for idle cores).
+//!   another thread of the pool stays awake through each substep of a call, taking its
+//!   parts as they come, rather than sleeping between them
+//!   ([`RapierLayout::set_pool_awake`] trades that back for an idle core).
 //! - `enhanced-determinism`: rapier's cross-platform bit-exact math.
 //!
 //! ## FAQ

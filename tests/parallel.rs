@@ -154,98 +154,104 @@ fn a_worker_on_a_pool_of_its_own_lays_a_ring_out() {
     );
 }
 
-/// From 2,048 awake bodies on, the pool's other threads stay awake through a call's
-/// substeps unless the host says otherwise (`RapierLayout::set_pool_awake`). Awake or
-/// not, and called from a pool's thread or from a thread outside any pool (rayon's
-/// global pool then takes the parts), `3elt` (4,720 nodes) is the same bits: which
-/// thread takes which part changes nothing, and nothing waits for ever.
-#[test]
-fn keeping_the_pool_awake_changes_no_bit() {
-    let frames = 30;
-    let host = |awake: bool| {
-        let mut host = Host::new(load_scene("3elt"), RapierLayoutConfig::force_directed());
-        host.layout.set_pool_awake(awake);
-        host
-    };
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(2)
-        .build()
-        .expect("a rayon pool");
-    let awake = pool.install(|| positions_after(host(true), frames));
-    let asleep = pool.install(|| positions_after(host(false), frames));
-    assert!(
-        awake[0] != awake[frames - 1],
-        "nothing moved in {frames} frames"
-    );
-    assert_eq!(
-        first_difference(&awake, &asleep),
-        None,
-        "(frame, node) where a pool left to sleep first differs from one kept awake"
-    );
-    // From a thread of no pool: a deadlock between the caller and the threads kept
-    // awake would never answer, so the wait is bounded (far above the second or so the
-    // frames take).
+/// What `f` returns, run on a thread of its own: a hang fails the test after
+/// `LIMIT` (far above the seconds these layouts take) instead of holding CI.
+fn bounded<T: Send + 'static>(what: &str, f: impl FnOnce() -> T + Send + 'static) -> T {
+    const LIMIT: std::time::Duration = std::time::Duration::from_secs(300);
     let (sender, receiver) = std::sync::mpsc::channel();
-    let outside = host(true);
-    std::thread::spawn(move || sender.send(positions_after(outside, frames)));
-    let limit = std::time::Duration::from_secs(300);
-    let outside = receiver.recv_timeout(limit).unwrap_or_else(|e| {
-        panic!("frames called from outside any pool: no answer in {limit:?} ({e})")
-    });
-    assert_eq!(
-        first_difference(&awake, &outside),
-        None,
-        "(frame, node) where frames called from outside any pool first differ"
-    );
+    std::thread::spawn(move || sender.send(f()));
+    receiver
+        .recv_timeout(LIMIT)
+        .unwrap_or_else(|e| panic!("{what}: no answer in {LIMIT:?} ({e})"))
 }
 
-/// Two layouts stepped side by side on one pool of 2 threads (`rayon::join`, frame by
-/// frame), each handing the pool a thread to keep awake through its substeps while the
-/// other's parts run on the same threads: both finish with the same bits as each laid
-/// out alone. (A thread kept awake for one layout above the other's parts on its stack
-/// could hold both up; the wait is bounded so that a hang fails.)
+/// A `3elt` host (4,720 nodes, so a thread is kept awake through the first frames'
+/// substeps unless `awake` is false).
+fn host_3elt(awake: bool) -> Host<u32> {
+    let mut host = Host::new(load_scene("3elt"), RapierLayoutConfig::force_directed());
+    host.layout.set_pool_awake(awake);
+    host
+}
+
+/// A pool of `threads` threads.
+fn pool(threads: usize) -> rayon::ThreadPool {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("a rayon pool")
+}
+
+/// From 2,048 awake bodies on, another thread of the pool stays awake through each
+/// substep unless the host says otherwise (`RapierLayout::set_pool_awake`). Awake or
+/// not, on 2 or 4 threads, and called from a thread outside any pool (rayon's global
+/// pool then takes the parts), `3elt` is the same bits: which thread takes which part
+/// changes nothing, and nothing waits for ever.
+#[test]
+fn keeping_the_pool_awake_changes_no_bit() {
+    const FRAMES: usize = 30;
+    let on = |threads: usize, awake: bool| {
+        bounded("frames on a pool", move || {
+            pool(threads).install(|| positions_after(host_3elt(awake), FRAMES))
+        })
+    };
+    let awake = on(2, true);
+    assert!(
+        awake[0] != awake[FRAMES - 1],
+        "nothing moved in {FRAMES} frames"
+    );
+    for (label, other) in [
+        ("2 threads left to sleep", on(2, false)),
+        ("4 threads kept awake", on(4, true)),
+        (
+            "frames called from outside any pool",
+            bounded("frames from outside any pool", || {
+                positions_after(host_3elt(true), FRAMES)
+            }),
+        ),
+    ] {
+        assert_eq!(
+            first_difference(&awake, &other),
+            None,
+            "(frame, node) where {label} first differ from 2 threads kept awake"
+        );
+    }
+}
+
+/// Two layouts stepped side by side on one pool (`rayon::join`, frame by frame), each
+/// handing the pool a thread to keep awake through its substeps while the other's
+/// parts run on the same threads: on 2 threads and on 4 (where a kept thread can take
+/// the other layout's parts, and sit above them), both finish with the same bits as
+/// each laid out alone, within a bounded wait.
 #[test]
 fn layouts_stepped_side_by_side_on_one_pool_keep_their_bits() {
-    let frames = 20;
-    let host = || Host::new(load_scene("3elt"), RapierLayoutConfig::force_directed());
-    let alone = run("3elt", RapierLayoutConfig::force_directed(), 2, frames);
-    let (sender, receiver) = std::sync::mpsc::channel();
-    let (mut first, mut second) = (host(), host());
-    std::thread::spawn(move || {
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(2)
-            .build()
-            .expect("a rayon pool");
-        let bits = |host: &Host<u32>| -> Vec<u32> {
-            host.scene
-                .nodes
-                .iter()
-                .flat_map(|n| [n.position.x.to_bits(), n.position.y.to_bits()])
-                .collect()
-        };
-        let side_by_side: Vec<(Vec<u32>, Vec<u32>)> = pool.install(|| {
-            (0..frames)
-                .map(|_| {
-                    rayon::join(|| first.frame(FRAME), || second.frame(FRAME));
-                    (bits(&first), bits(&second))
+    const FRAMES: usize = 20;
+    let alone = run("3elt", RapierLayoutConfig::force_directed(), 2, FRAMES);
+    for threads in [2, 4] {
+        let (first, second): (Vec<Vec<u32>>, Vec<Vec<u32>>) =
+            bounded("two layouts side by side", move || {
+                let (mut first, mut second) = (host_3elt(true), host_3elt(true));
+                let bits = |host: &Host<u32>| -> Vec<u32> {
+                    host.scene
+                        .nodes
+                        .iter()
+                        .flat_map(|n| [n.position.x.to_bits(), n.position.y.to_bits()])
+                        .collect()
+                };
+                pool(threads).install(|| {
+                    (0..FRAMES)
+                        .map(|_| {
+                            rayon::join(|| first.frame(FRAME), || second.frame(FRAME));
+                            (bits(&first), bits(&second))
+                        })
+                        .unzip()
                 })
-                .collect()
-        });
-        sender.send(side_by_side)
-    });
-    let limit = std::time::Duration::from_secs(300);
-    let side_by_side = receiver
-        .recv_timeout(limit)
-        .unwrap_or_else(|e| panic!("two layouts side by side: no answer in {limit:?} ({e})"));
-    let (first, second): (Vec<_>, Vec<_>) = side_by_side.into_iter().unzip();
-    assert_eq!(
-        first_difference(&alone, &first),
-        None,
-        "(frame, node) where the first of two layouts side by side differs from one alone"
-    );
-    assert_eq!(
-        first_difference(&alone, &second),
-        None,
-        "(frame, node) where the second of two layouts side by side differs from one alone"
-    );
+            });
+        for (which, laid_out) in [("first", first), ("second", second)] {
+            assert_eq!(
+                first_difference(&alone, &laid_out),
+                None,
+                "{threads} threads: (frame, node) where the {which} of two layouts side by side differs from one alone"
+            );
+        }
+    }
 }

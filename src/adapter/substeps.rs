@@ -81,15 +81,15 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         if let Some(profile) = self.forces.profile.as_mut() {
             profile.substeps += u64::from(plan.substeps);
         }
-        // Under `parallel`, another thread of the pool waits for the substeps' parts
+        // Under `parallel`, another thread of the pool waits for each substep's parts
         // awake (`parallel/awake.rs`; `RapierLayout::set_pool_awake`).
         let awake = if self.pool_awake {
             world.awake_body_count()
         } else {
             0
         };
-        crate::parallel::with_pool_awake(awake, || {
-            for k in 0..plan.substeps {
+        for k in 0..plan.substeps {
+            crate::parallel::with_pool_awake(awake, || {
                 drive_kinematic_bodies(world, &self.drives, k, plan.substeps);
                 if forces_on {
                     let law = HeatLaw {
@@ -110,8 +110,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 if !self.forces.targets.locks.is_empty() {
                     hold_locked_axes(world, &self.forces.targets.locks);
                 }
-            }
-        });
+            });
+        }
     }
 
     /// Takes the nodes rapier quarantined during this call's steps.

@@ -348,6 +348,13 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
         self.send(Command::Configure(Box::new(config)));
     }
 
+    /// Whether another thread of the worker's pool stays awake through a step's
+    /// substeps, as [`RapierLayout::set_pool_awake`] says (default: on). A pool of one
+    /// thread, the default on a 2-core machine, has no other thread to keep awake.
+    pub fn set_pool_awake(&mut self, on: bool) {
+        self.send(Command::PoolAwake(on));
+    }
+
     fn send(&mut self, command: Command<N>) {
         self.sent += 1;
         if let Some(commands) = &self.commands {

@@ -34,6 +34,7 @@ pub(super) enum Command<N> {
     Forces(N, Option<NodeForces>),
     Configure(Box<RapierLayoutConfig>),
     Reshape(N, f32, NodeShape),
+    PoolAwake(bool),
 }
 
 /// The newest frame, waiting for the host to take it.
@@ -195,6 +196,7 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
                     self.changed.push(i);
                 }
             }
+            Command::PoolAwake(_) => {}
             _ => self.restructured = true,
         }
         match command {
@@ -239,6 +241,7 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
                 self.extras.forces.remove(&id);
             }
             Command::Configure(config) => self.layout.config = *config,
+            Command::PoolAwake(on) => self.layout.set_pool_awake(on),
             Command::Reshape(id, radius, shape) => {
                 self.reindex();
                 if let Some(&i) = self.index.get(&id) {

@@ -17,11 +17,16 @@ use graph_canvas_layout::RapierLayoutConfig;
 /// Every node's position, as bits, after each of `frames` frames of `scene` laid out by
 /// `config` on a pool of `threads` threads.
 fn run(scene: &str, config: RapierLayoutConfig, threads: usize, frames: usize) -> Vec<Vec<u32>> {
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads)
-        .build()
-        .expect("a rayon pool");
-    pool.install(|| positions_after(Host::new(load_scene(scene), config), frames))
+    pool(threads).install(|| positions_after(Host::new(load_scene(scene), config), frames))
+}
+
+/// Every node's position in `host`'s scene, as bits.
+fn bits(host: &Host<u32>) -> Vec<u32> {
+    host.scene
+        .nodes
+        .iter()
+        .flat_map(|n| [n.position.x.to_bits(), n.position.y.to_bits()])
+        .collect()
 }
 
 /// Every node's position, as bits, after each of `frames` frames of `host`.
@@ -29,11 +34,7 @@ fn positions_after(mut host: Host<u32>, frames: usize) -> Vec<Vec<u32>> {
     (0..frames)
         .map(|_| {
             host.frame(FRAME);
-            host.scene
-                .nodes
-                .iter()
-                .flat_map(|n| [n.position.x.to_bits(), n.position.y.to_bits()])
-                .collect()
+            bits(&host)
         })
         .collect()
 }
@@ -230,13 +231,6 @@ fn layouts_stepped_side_by_side_on_one_pool_keep_their_bits() {
         let (first, second): (Vec<Vec<u32>>, Vec<Vec<u32>>) =
             bounded("two layouts side by side", move || {
                 let (mut first, mut second) = (host_3elt(true), host_3elt(true));
-                let bits = |host: &Host<u32>| -> Vec<u32> {
-                    host.scene
-                        .nodes
-                        .iter()
-                        .flat_map(|n| [n.position.x.to_bits(), n.position.y.to_bits()])
-                        .collect()
-                };
                 pool(threads).install(|| {
                     (0..FRAMES)
                         .map(|_| {

@@ -10,8 +10,8 @@
 //! the last: under the feature they solve the pairs block by block, an order fixed by
 //! the pairs alone, which differs from the serial build's from two blocks on.
 //!
-//! [`with_pool_awake`] (`awake.rs`) keeps another thread of the pool awake through a
-//! call's substeps, so a part does not wait for it to wake; it changes which thread
+//! [`with_pool_awake`] (`awake.rs`) keeps another thread of the pool awake through each
+//! substep of a call, so a part does not wait for it to wake; it changes which thread
 //! takes which piece, never what a piece computes.
 
 #[cfg(feature = "parallel")]
@@ -92,7 +92,7 @@ mod awake;
 #[cfg(feature = "parallel")]
 pub(crate) use awake::with_pool_awake;
 
-/// Runs `f` (the substeps of a call with `awake` bodies awake): without `parallel` there
+/// Runs `f` (a substep with `awake` bodies awake): without `parallel` there
 /// is no pool to keep awake.
 #[cfg(not(feature = "parallel"))]
 pub(crate) fn with_pool_awake<R>(_awake: usize, f: impl FnOnce() -> R) -> R {

@@ -154,12 +154,20 @@ fn main() {
     }
     let own = |r: Run| r.forces + r.contacts;
     println!(
-        "threads: {name} {preset} best of {runs}: 1 thread {:.2} ms, 2 threads {:.2} ms, ratio {:.2}; own forces and contacts ratio {:.2}; asleep between parts {:.2} and {:.2} (same bits)",
+        "threads: {name} {preset} best of {runs}: 1 thread {:.2} ms, 2 threads {:.2} ms, ratio {:.2}; own forces and contacts ratio {:.2}; asleep between parts {:.2} and {:.2} (same bits, digest {:016x})",
         best[0].frame,
         best[1].frame,
         best[1].frame / best[0].frame,
         own(best[1]) / own(best[0]),
         best[2].frame / best[0].frame,
-        own(best[2]) / own(best[0])
+        own(best[2]) / own(best[0]),
+        digest(&bits[0])
     );
+}
+
+/// An FNV-1a hash of the final positions' bits, to compare builds by.
+fn digest(bits: &[u32]) -> u64 {
+    bits.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    })
 }

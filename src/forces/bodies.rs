@@ -9,7 +9,41 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::RigidBody;
 
+use crate::parallel;
 use crate::world::RapierSceneWorld;
+
+/// Slots a run of a read of every body takes (fixed: each body's read is its own).
+const READ_RUN: usize = 1_024;
+
+/// What a substep reads of one body.
+struct BodyState {
+    point: Point2D<f32>,
+    velocity: Vector2D<f32>,
+    pushed: bool,
+    sleeping: bool,
+    next: Point2D<f32>,
+}
+
+impl BodyState {
+    #[inline]
+    fn of(body: &RigidBody) -> Self {
+        let (t, v) = (body.translation(), body.linvel());
+        let point = Point2D::new(t.x, t.y);
+        let dynamic = body.is_dynamic();
+        Self {
+            point,
+            velocity: Vector2D::new(v.x, v.y),
+            pushed: dynamic && !body.is_sleeping(),
+            sleeping: dynamic && body.is_sleeping(),
+            next: if body.is_kinematic() {
+                let next = body.next_position().translation;
+                Point2D::new(next.x, next.y)
+            } else {
+                point
+            },
+        }
+    }
+}
 
 /// Every body's state a substep reads, by world slot.
 #[derive(Debug, Default)]
@@ -70,6 +104,7 @@ impl Bodies {
         self.kept = false;
     }
 
+    /// Reads every body, in runs of [`READ_RUN`] slots side by side under `parallel`.
     fn read_all<N: Clone + Eq + Hash>(&mut self, world: &RapierSceneWorld<N>) {
         let n = world.slot_count();
         self.points.clear();
@@ -82,27 +117,39 @@ impl Bodies {
         self.pushed.resize(n, false);
         self.next.resize(n, Point2D::origin());
         self.sleeping.resize(n, false);
-        for s in 0..n {
-            self.read(s, world.body_at(s));
-        }
+        let view = world.slots_view();
+        let runs = || parallel::runs(n, READ_RUN);
+        let mut jobs: Vec<_> = parallel::split_ranges(&mut self.points, runs())
+            .into_iter()
+            .zip(parallel::split_ranges(&mut self.velocities, runs()))
+            .zip(parallel::split_ranges(&mut self.pushed, runs()))
+            .zip(parallel::split_ranges(&mut self.next, runs()))
+            .zip(parallel::split_ranges(&mut self.sleeping, runs()))
+            .map(|((((p, (_, v)), (_, pu)), (_, ne)), (_, sl))| (p, v, pu, ne, sl))
+            .collect();
+        parallel::for_each(
+            &mut jobs,
+            || (),
+            |(), ((range, points), velocities, pushed, next, sleeping)| {
+                for (k, s) in range.clone().enumerate() {
+                    let state = BodyState::of(view.body_at(s));
+                    (points[k], velocities[k], pushed[k]) =
+                        (state.point, state.velocity, state.pushed);
+                    (next[k], sleeping[k]) = (state.next, state.sleeping);
+                }
+            },
+        );
         self.kept = true;
     }
 
     #[inline]
     fn read(&mut self, s: usize, body: &RigidBody) {
-        let (t, v) = (body.translation(), body.linvel());
-        let p = Point2D::new(t.x, t.y);
-        self.points[s] = p;
-        self.velocities[s] = Vector2D::new(v.x, v.y);
-        let dynamic = body.is_dynamic();
-        self.pushed[s] = dynamic && !body.is_sleeping();
-        self.sleeping[s] = dynamic && body.is_sleeping();
-        self.next[s] = if body.is_kinematic() {
-            let next = body.next_position().translation;
-            Point2D::new(next.x, next.y)
-        } else {
-            p
-        };
+        let state = BodyState::of(body);
+        self.points[s] = state.point;
+        self.velocities[s] = state.velocity;
+        self.pushed[s] = state.pushed;
+        self.sleeping[s] = state.sleeping;
+        self.next[s] = state.next;
     }
 
     /// Debug builds (the tests): what is kept is what reading every body gives.

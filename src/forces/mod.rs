@@ -131,6 +131,9 @@ fn implicit_with_pulls(
     Vector2D::new(c * f.x - xy * f.y, a * f.y - xy * f.x) * (m / det)
 }
 
+/// Bodies a run of [`Forces::apply`]'s sums takes (fixed: each body's sum is its own).
+const COMBINE_RUN: usize = 1_024;
+
 /// One force on bodies, applied every substep.
 pub(crate) trait BodyForce<N>: Send + Sync {
     /// Whether `config` or the host's per-node `targets` ask for this force at all.
@@ -326,52 +329,101 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             &mut self.sums.springs,
             &mut self.sums.forces,
         );
-        for (s, f) in self.sums.forces.iter_mut().enumerate() {
-            if !self.bodies.pushed[s] {
-                continue;
-            }
-            let mut resistance = self.sums.resistance[s];
-            let mut pulls = self.sums.pulls[s];
-            match law.boosts(world.host_at(s).heat) {
-                None => *f += self.sums.springs[s],
-                Some((springs, others)) => {
-                    // Heated by a local disturbance.
-                    *f = *f * others + self.sums.springs[s] * springs;
-                    resistance *= springs;
-                    pulls = pulls.map(|r| r * springs);
-                }
-            }
-            let mass = world.mass_at(s);
-            if pulls.iter().any(|r| *r != 0.0) {
-                *f = implicit_with_pulls(*f, mass, resistance, pulls);
-            } else if resistance > 0.0 {
-                *f *= mass / (mass + resistance);
-            }
-            if !f.is_finite() {
-                // Left as it was: the body keeps the force it had. What is kept of it
-                // no longer matches rapier: read again at the next gather.
-                self.bodies.pushed[s] = false;
-                world.mark_changed(s);
-            }
-        }
         let separate = config.separates_disks() && world.contacts_enabled();
+        self.combine(world, law, separate.then_some(dt));
         if separate {
-            for (s, v) in self.bodies.velocities.iter_mut().enumerate() {
-                if self.bodies.pushed[s] {
-                    // The velocity this substep's force gives.
-                    *v += self.sums.forces[s] * (dt / world.mass_at(s));
-                }
-            }
             let watch = Stopwatch::start(&self.profile);
             self.collide.resolve(world, &self.bodies, contacts, dt);
             watch.stop(&mut self.profile, |p| &mut p.contacts);
         }
+        self.put_on_bodies(world, separate);
+    }
+
+    /// Sums each pushed body's forces and springs at its own heat ([`HeatLaw`]) and
+    /// takes the implicit step on its stiffness, in runs of [`COMBINE_RUN`] bodies side
+    /// by side under `parallel` (each body's own arithmetic). A body whose sum is not
+    /// finite is no longer pushed: it keeps the force it had, and what is kept of it no
+    /// longer matches rapier, so it is read again at the next gather. With `velocity_dt`,
+    /// also adds to each pushed body's velocity what its force gives it over that time
+    /// (what the disk separation starts from).
+    fn combine(&mut self, world: &mut RapierSceneWorld<N>, law: HeatLaw, velocity_dt: Option<f32>) {
+        let n = self.sums.forces.len();
+        let view = world.slots_view();
+        let ForceSums {
+            forces,
+            springs,
+            resistance,
+            pulls,
+        } = &mut self.sums;
+        let (springs, resistance, pulls) = (&springs[..], &resistance[..], &pulls[..]);
+        let runs = || crate::parallel::runs(n, COMBINE_RUN);
+        let mut jobs: Vec<_> = crate::parallel::split_ranges(forces, runs())
+            .into_iter()
+            .zip(crate::parallel::split_ranges(
+                &mut self.bodies.pushed,
+                runs(),
+            ))
+            .zip(crate::parallel::split_ranges(
+                &mut self.bodies.velocities,
+                runs(),
+            ))
+            .map(|((forces, (_, pushed)), (_, velocities))| {
+                (forces, pushed, velocities, Vec::new())
+            })
+            .collect();
+        crate::parallel::for_each(
+            &mut jobs,
+            || (),
+            |(), ((range, forces), pushed, velocities, lost)| {
+                let bodies = range.clone().zip(forces.iter_mut()).zip(pushed.iter_mut());
+                for (((s, f), pushed), v) in bodies.zip(velocities.iter_mut()) {
+                    if !*pushed {
+                        continue;
+                    }
+                    let mut resistance = resistance[s];
+                    let mut pulls = pulls[s];
+                    match law.boosts(view.host_at(s).heat) {
+                        None => *f += springs[s],
+                        Some((springs_boost, others)) => {
+                            // Heated by a local disturbance.
+                            *f = *f * others + springs[s] * springs_boost;
+                            resistance *= springs_boost;
+                            pulls = pulls.map(|r| r * springs_boost);
+                        }
+                    }
+                    let mass = view.mass_at(s);
+                    if pulls.iter().any(|r| *r != 0.0) {
+                        *f = implicit_with_pulls(*f, mass, resistance, pulls);
+                    } else if resistance > 0.0 {
+                        *f *= mass / (mass + resistance);
+                    }
+                    if !f.is_finite() {
+                        *pushed = false;
+                        lost.push(s);
+                    } else if let Some(dt) = velocity_dt {
+                        // The velocity this substep's force gives.
+                        *v += *f * (dt / mass);
+                    }
+                }
+            },
+        );
+        let lost: Vec<usize> = jobs.into_iter().flat_map(|(.., lost)| lost).collect();
+        for s in lost {
+            world.mark_changed(s);
+        }
+    }
+
+    /// Sets each pushed body's force to its sum and adds the disk separation's velocity
+    /// change (when `separate`) to each dynamic body it changed.
+    fn put_on_bodies(&mut self, world: &mut RapierSceneWorld<N>, separate: bool) {
+        let n = world.slot_count();
+        let changes = if separate {
+            self.collide.changes(n)
+        } else {
+            &[]
+        };
         for s in 0..n {
-            let change = if separate {
-                self.collide.change(s)
-            } else {
-                Vector2D::zero()
-            };
+            let change = changes.get(s).copied().unwrap_or_default();
             if !self.bodies.pushed[s] && change == Vector2D::zero() {
                 continue;
             }

@@ -63,7 +63,7 @@ pub(crate) struct SpringForce {
 /// sum them body by body, both side by side (fewer are not worth the pool's start).
 const BY_BODY_LINKS: usize = 8_192;
 /// Links, or bodies, a piece of that work takes (fixed, so no sum depends on the pool).
-const RUN: usize = 2_048;
+const RUN: usize = 512;
 
 /// Below one pushed body in this many, a substep visits only the pushed bodies' links
 /// (in the order of all links, so every sum is the same) instead of checking every link.
@@ -201,8 +201,7 @@ impl SpringForce {
         } = self;
         pulls.clear();
         pulls.resize(links.len(), [None; 2]);
-        let runs =
-            |len: usize| (0..len.div_ceil(RUN)).map(move |r| r * RUN..((r + 1) * RUN).min(len));
+        let runs = |len: usize| parallel::runs(len, RUN);
         let mut jobs = parallel::split_ranges(pulls, runs(links.len()));
         parallel::for_each(
             &mut jobs,

@@ -65,6 +65,13 @@ pub(crate) fn sort_unstable<T: Ord + Send>(items: &mut [T]) {
     items.sort_unstable();
 }
 
+/// `0..len` cut into runs of `run` (the last shorter): pieces fixed by the work alone,
+/// never by the pool.
+pub(crate) fn runs(len: usize, run: usize) -> impl Iterator<Item = std::ops::Range<usize>> {
+    let run = run.max(1);
+    (0..len.div_ceil(run)).map(move |r| r * run..((r + 1) * run).min(len))
+}
+
 /// Splits `buffer` into the disjoint, ascending `ranges` of it, each with its range.
 ///
 /// # Panics

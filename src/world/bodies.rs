@@ -17,10 +17,10 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// longer than [`POSITION_EPSILON`].
     pub fn read_positions(&self) -> DeltaMap<N> {
         let mut out = DeltaMap::with_capacity_and_hasher(self.slots.len(), IdHasher::default());
-        for (i, slot) in self.slots.iter().enumerate() {
+        for (i, (slot, id)) in self.slots.iter().zip(&self.ids).enumerate() {
             let delta = self.position_at(i) - slot.anchor;
             if delta.square_length() > POSITION_EPSILON * POSITION_EPSILON && delta.is_finite() {
-                out.insert(slot.id.clone(), delta);
+                out.insert(id.clone(), delta);
             }
         }
         out

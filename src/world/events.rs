@@ -88,7 +88,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             let node_of = |handle: ColliderHandle| {
                 let body = self.colliders.get(handle)?.parent()?;
                 let slot = self.bodies.get(body)?.user_data as usize;
-                self.slots.get(slot).map(|s| s.id.clone())
+                self.ids.get(slot).cloned()
             };
             let (Some(a), Some(b)) = (node_of(event.collider1()), node_of(event.collider2()))
             else {

@@ -41,6 +41,7 @@ pub(crate) mod rapier_joint;
 mod recovery;
 pub(crate) mod saved;
 pub(crate) mod slot;
+pub(crate) use slot::SlotsView;
 mod spring_scale;
 mod stepping;
 
@@ -123,7 +124,9 @@ pub struct RapierSceneWorld<N> {
     pipeline: PhysicsPipeline,
     params: IntegrationParameters,
     // ── scene mapping ──
-    pub(crate) slots: Vec<NodeSlot<N>>,
+    pub(crate) slots: Vec<NodeSlot>,
+    /// The node in each slot.
+    pub(crate) ids: Vec<N>,
     index: HashMap<N, u32, IdHasher>,
     next_serial: u64,
     joints: Vec<JointSlot<N>>,
@@ -220,6 +223,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             pipeline: PhysicsPipeline::new(),
             params: IntegrationParameters::default(),
             slots: Vec::new(),
+            ids: Vec::new(),
             index: HashMap::with_hasher(IdHasher::default()),
             next_serial: 0,
             joints: Vec::new(),
@@ -279,7 +283,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     /// The node ids, in body insertion order (removals swap the last node into the gap).
     pub fn node_ids(&self) -> impl Iterator<Item = &N> + '_ {
-        self.slots.iter().map(|s| &s.id)
+        self.ids.iter()
     }
 
     /// The topology hash this world was built or last patched for (0 when unset).

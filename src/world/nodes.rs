@@ -90,8 +90,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         });
         self.index
             .insert(binding.node_id.clone(), slot_index as u32);
+        self.ids.push(binding.node_id.clone());
         self.slots.push(NodeSlot {
-            id: binding.node_id.clone(),
             serial: self.next_serial,
             body,
             collider,
@@ -117,6 +117,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         self.changes.mark_all();
         let slot_index = slot_index as usize;
         let removed = self.slots.swap_remove(slot_index);
+        self.ids.swap_remove(slot_index);
         let serial = removed.serial;
         // Our own joint bookkeeping first; rapier drops the joints with the body.
         let mut i = 0;
@@ -139,7 +140,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         );
         if slot_index < self.slots.len() {
             let moved = &self.slots[slot_index];
-            self.index.insert(moved.id.clone(), slot_index as u32);
+            self.index
+                .insert(self.ids[slot_index].clone(), slot_index as u32);
             if let Some(body) = self.bodies.get_mut(moved.body) {
                 body.user_data = slot_index as u128;
             }

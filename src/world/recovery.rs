@@ -31,8 +31,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             body.set_linvel(Vector::ZERO, false);
             body.set_enabled(true);
             self.changes.mark(slot, self.slots.len());
-            if let Some(slot) = self.slots.get(slot) {
-                self.recovered.push(slot.id.clone());
+            if let Some(id) = self.ids.get(slot) {
+                self.recovered.push(id.clone());
             }
         }
     }

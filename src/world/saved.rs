@@ -15,11 +15,14 @@ use rapier2d::prelude::{
 use serde::{Deserialize, Serialize};
 
 use super::events::{CollisionCollector, SceneEvent};
-use super::slot::{JointSlot, NodeSlot};
+use super::slot::{HostSync, JointSlot, NodeSlot};
 use super::spring_scale::{SpringScale, StretchCache};
 use super::{RapierSceneWorld, WorldOptions};
 use crate::input::snapshot_error::SnapshotError;
 use crate::layout::IdHasher;
+use crate::world::bindings::ColliderSpec;
+use euclid::default::Point2D;
+use rapier2d::prelude::{ColliderHandle, RigidBodyHandle};
 
 /// Everything a world needs to continue where it was.
 #[derive(Clone, Serialize, Deserialize)]
@@ -35,7 +38,7 @@ pub(crate) struct SavedWorld<N> {
     narrow_phase: NarrowPhase,
     ccd_solver: CCDSolver,
     params: IntegrationParameters,
-    pub(crate) slots: Vec<NodeSlot<N>>,
+    pub(crate) slots: Vec<SavedSlot<N>>,
     next_serial: u64,
     joints: Vec<JointSlot<N>>,
     options: WorldOptions,
@@ -68,7 +71,9 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             narrow_phase: self.narrow_phase.clone(),
             ccd_solver: self.ccd_solver.clone(),
             params: self.params,
-            slots: self.slots.clone(),
+            slots: (self.ids.iter().zip(&self.slots))
+                .map(|(id, slot)| SavedSlot::of(id.clone(), slot))
+                .collect(),
             next_serial: self.next_serial,
             joints: self.joints.clone(),
             options: self.options,
@@ -153,6 +158,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
         {
             return inconsistent("joints that no edge owns");
         }
+        let (ids, slots) = saved.slots.into_iter().map(SavedSlot::split).unzip();
         let collector = (saved.options.collisions && saved.options.contact_events)
             .then(CollisionCollector::default);
         Ok(Self {
@@ -167,7 +173,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             ccd_solver: saved.ccd_solver,
             pipeline: PhysicsPipeline::new(),
             params: saved.params,
-            slots: saved.slots,
+            ids,
+            slots,
             index,
             next_serial: saved.next_serial,
             joints: saved.joints,
@@ -202,5 +209,46 @@ impl<N> SavedWorld<N> {
     /// How many edge joints the world holds.
     pub(crate) fn joint_count(&self) -> usize {
         self.joints.len()
+    }
+}
+
+/// One node's slot as a snapshot keeps it: its id, then the slot's fields.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub(crate) struct SavedSlot<N> {
+    id: N,
+    serial: u64,
+    body: RigidBodyHandle,
+    collider: Option<ColliderHandle>,
+    shape: ColliderSpec,
+    mass: f32,
+    anchor: Point2D<f32>,
+    host: HostSync,
+}
+
+impl<N> SavedSlot<N> {
+    fn of(id: N, slot: &NodeSlot) -> Self {
+        Self {
+            id,
+            serial: slot.serial,
+            body: slot.body,
+            collider: slot.collider,
+            shape: slot.shape,
+            mass: slot.mass,
+            anchor: slot.anchor,
+            host: slot.host,
+        }
+    }
+
+    fn split(self) -> (N, NodeSlot) {
+        let slot = NodeSlot {
+            serial: self.serial,
+            body: self.body,
+            collider: self.collider,
+            shape: self.shape,
+            mass: self.mass,
+            anchor: self.anchor,
+            host: self.host,
+        };
+        (self.id, slot)
     }
 }

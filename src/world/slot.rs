@@ -6,7 +6,9 @@
 use std::hash::Hash;
 
 use euclid::default::{Point2D, Vector2D};
-use rapier2d::prelude::{ColliderHandle, ImpulseJointHandle, RigidBodyHandle};
+use rapier2d::prelude::{
+    ColliderHandle, ImpulseJointHandle, RigidBody, RigidBodyHandle, RigidBodySet,
+};
 use serde::{Deserialize, Serialize};
 
 use super::RapierSceneWorld;
@@ -14,10 +16,11 @@ use crate::config::EdgeJoint;
 use crate::input::node_forces::AxisLock;
 use crate::world::bindings::ColliderSpec;
 
-/// One node's body and the bookkeeping kept for it.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub(crate) struct NodeSlot<N> {
-    pub(crate) id: N,
+/// One node's body and the bookkeeping kept for it; its id is kept apart
+/// (`RapierSceneWorld::ids`, same index), so that the slots, free of the host's id
+/// type, can be read side by side under `parallel` ([`SlotsView`]).
+#[derive(Clone, Debug)]
+pub(crate) struct NodeSlot {
     /// Never reused: names the node in joint keys across swaps and removals.
     pub(crate) serial: u64,
     pub(crate) body: RigidBodyHandle,
@@ -121,7 +124,7 @@ pub(crate) fn joint_key(a: u64, b: u64) -> (u64, u64) {
 impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// The node in `slot`.
     pub(crate) fn id_at(&self, slot: usize) -> &N {
-        &self.slots[slot].id
+        &self.ids[slot]
     }
 
     /// The adapter's sync state of the node in `slot`.
@@ -162,5 +165,40 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// The shape of the node in `slot`.
     pub(crate) fn shape_at(&self, slot: usize) -> ColliderSpec {
         self.slots[slot].shape
+    }
+}
+
+/// The world's bodies and slots without the host's ids: `Sync` whatever the id type,
+/// so the forces read them side by side under `parallel`.
+#[derive(Clone, Copy)]
+pub(crate) struct SlotsView<'a> {
+    bodies: &'a RigidBodySet,
+    slots: &'a [NodeSlot],
+}
+
+impl SlotsView<'_> {
+    /// The body in `slot`.
+    pub(crate) fn body_at(&self, slot: usize) -> &RigidBody {
+        &self.bodies[self.slots[slot].body]
+    }
+
+    /// The mass of the body in `slot`.
+    pub(crate) fn mass_at(&self, slot: usize) -> f32 {
+        self.slots[slot].mass
+    }
+
+    /// The adapter's sync state of the node in `slot`.
+    pub(crate) fn host_at(&self, slot: usize) -> &HostSync {
+        &self.slots[slot].host
+    }
+}
+
+impl<N> RapierSceneWorld<N> {
+    /// The bodies and slots, to read side by side.
+    pub(crate) fn slots_view(&self) -> SlotsView<'_> {
+        SlotsView {
+            bodies: &self.bodies,
+            slots: &self.slots,
+        }
     }
 }

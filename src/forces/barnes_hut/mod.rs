@@ -14,6 +14,7 @@ use crate::parallel;
 use euclid::default::{Point2D, Vector2D};
 
 mod groups;
+mod order;
 
 const NONE: u32 = u32::MAX;
 /// The place of a point of the root square (`x`, `y` in `[0, 1)`) on the Z-order
@@ -203,8 +204,11 @@ pub struct ManyBody {
     /// The finite points in tree order, and the index each was given at.
     sorted: Vec<Point2D<f32>>,
     index: Vec<u32>,
-    /// Every finite point's Z-order code and index, sorted.
+    /// Every finite point's Z-order code and index, sorted (`order.rs`), and the
+    /// sort's buffers.
     entries: Vec<(u64, u32)>,
+    scratch: Vec<(u64, u32)>,
+    starts: Vec<u32>,
     /// The cells still to split.
     work: Vec<Work>,
     /// The subtrees of a large tree, each with its own cells.
@@ -262,7 +266,7 @@ impl ManyBody {
         // Adaptive: the last build's order is nearly this one. Codes tie only within a
         // deepest leaf, whose points then go in index order, whatever the last order
         // (and the entries are unique, so any sort gives the same order).
-        parallel::sort(&mut self.entries);
+        order::sort_entries(&mut self.entries, &mut self.scratch, &mut self.starts);
         self.index.extend(self.entries.iter().map(|e| e.1));
         self.sorted
             .extend(self.index.iter().map(|&i| points[i as usize]));

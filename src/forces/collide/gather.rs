@@ -10,7 +10,7 @@ use super::Collide;
 use crate::parallel;
 
 /// Local indices a run of the gather copies.
-const GATHER_RUN: usize = 4_096;
+const GATHER_RUN: usize = 1_024;
 
 /// The local arrays of one run of the grid's order, and the world slots it copies from.
 struct Run<'a> {

@@ -30,7 +30,7 @@ use rapier2d::prelude::Vector;
 
 use super::Bodies;
 use crate::config::ContactSoftness;
-use crate::world::RapierSceneWorld;
+use crate::world::{RapierSceneWorld, SlotsView};
 
 mod gather;
 mod grid;
@@ -56,7 +56,9 @@ const SLEEPING_OVERLAP: f32 = 0.25;
 const PASSES: usize = 8;
 const RELAX_PASSES: usize = 4;
 /// Pairs a run of the separations after the step takes (side by side under `parallel`).
-const SEPARATION_RUN: usize = 8_192;
+const SEPARATION_RUN: usize = 2_048;
+/// Bodies a run of the reads after the step takes (fixed: each read is its own).
+const READ_RUN: usize = 1_024;
 /// How many runs of the pairs a pass works through side by side (eight were slower).
 const STREAMS: usize = 4;
 /// A pass that changes no pair's relative speed by more than this (world units per
@@ -157,6 +159,10 @@ pub(crate) struct Collide {
     motion: Vec<Vector2D<f32>>,
     /// After the step: which bodies in pairs were read anew.
     read: Vec<bool>,
+    /// By slot, the velocity change of the last [`resolve`](Self::resolve).
+    changes: Vec<Vector2D<f32>>,
+    /// After the step, by slot: the new position and velocity of each body in a pair.
+    fresh: Vec<(Point2D<f32>, Vector2D<f32>)>,
     /// Dynamic bodies asleep (until a pair wakes them).
     sleeping: Vec<bool>,
     /// Last substep's pairs `(slot a, slot b, impulse)`, for warm starting, and the
@@ -234,13 +240,30 @@ impl Collide {
         self.by_slot.clear();
     }
 
-    /// The velocity change [`resolve`](Self::resolve) gives the body in slot `s`.
-    pub(crate) fn change(&self, s: usize) -> Vector2D<f32> {
-        let l = self.local.get(s).map_or(NONE, |&l| l) as usize;
-        match (self.velocity.get(l), self.before.get(l)) {
-            (Some(&v), Some(&b)) if self.softness.is_some() => v - b,
-            _ => Vector2D::zero(),
+    /// The velocity change [`resolve`](Self::resolve) gives each of the first `n`
+    /// slots' bodies (zero for the rest), worked out in runs of slots side by side under
+    /// `parallel`.
+    pub(crate) fn changes(&mut self, n: usize) -> &[Vector2D<f32>] {
+        self.changes.clear();
+        self.changes.resize(n, Vector2D::zero());
+        if self.softness.is_some() {
+            let (local, velocity, before) = (&self.local, &self.velocity, &self.before);
+            let runs = crate::parallel::runs(n, READ_RUN);
+            let mut jobs = crate::parallel::split_ranges(&mut self.changes, runs);
+            crate::parallel::for_each(
+                &mut jobs,
+                || (),
+                |(), (range, changes)| {
+                    for (change, s) in changes.iter_mut().zip(range.clone()) {
+                        let l = local.get(s).map_or(NONE, |&l| l) as usize;
+                        if let (Some(&v), Some(&b)) = (velocity.get(l), before.get(l)) {
+                            *change = v - b;
+                        }
+                    }
+                },
+            );
         }
+        &self.changes
     }
 
     /// After the step: passes without the push, from the bodies' new positions and
@@ -260,13 +283,7 @@ impl Collide {
             self.read[pair.a as usize] = true;
             self.read[pair.b as usize] = true;
         }
-        for (s, l) in in_pairs(&self.local[..slots.min(self.local.len())], &self.read) {
-            let body = world.body_at(s);
-            let (t, v) = (body.translation(), body.linvel());
-            self.points[l] = Point2D::new(t.x, t.y);
-            self.velocity[l] = Vector2D::new(v.x, v.y);
-            self.before[l] = self.velocity[l];
-        }
+        self.read_bodies_in_pairs(world.slots_view(), slots);
         // The world's bodies do not change between `resolve` and here.
         debug_assert!(self.order.iter().all(|&s| (s as usize) < slots));
         // Every body in a pair was read. In runs of pairs side by side under `parallel`
@@ -279,8 +296,7 @@ impl Collide {
             self.boxes,
         );
         let count = self.pairs.len();
-        let runs = (0..count.div_ceil(SEPARATION_RUN))
-            .map(|r| r * SEPARATION_RUN..((r + 1) * SEPARATION_RUN).min(count));
+        let runs = crate::parallel::runs(count, SEPARATION_RUN);
         let mut jobs = crate::parallel::split_ranges(&mut self.pairs, runs);
         crate::parallel::for_each(
             &mut jobs,
@@ -320,6 +336,53 @@ impl Collide {
             }
         }
         self.keep_impulses(world.version());
+    }
+
+    /// The new positions and velocities of the bodies in pairs: read by slot in runs
+    /// (rapier's bodies are in that order; at 100,000 bodies they outgrow the cache,
+    /// and the grid's order would miss it on every body), then copied to their local
+    /// indices in runs, both side by side under `parallel`.
+    fn read_bodies_in_pairs(&mut self, view: SlotsView<'_>, slots: usize) {
+        let local = &self.local[..slots.min(self.local.len())];
+        let read = &self.read;
+        self.fresh.clear();
+        self.fresh
+            .resize(local.len(), (Point2D::origin(), Vector2D::zero()));
+        let runs = |n: usize| crate::parallel::runs(n, READ_RUN);
+        let mut jobs = crate::parallel::split_ranges(&mut self.fresh, runs(local.len()));
+        crate::parallel::for_each(
+            &mut jobs,
+            || (),
+            |(), (range, fresh)| {
+                for (k, s) in range.clone().enumerate() {
+                    let l = local[s];
+                    if l != NONE && read[l as usize] {
+                        let body = view.body_at(s);
+                        let (t, v) = (body.translation(), body.linvel());
+                        fresh[k] = (Point2D::new(t.x, t.y), Vector2D::new(v.x, v.y));
+                    }
+                }
+            },
+        );
+        let (order, fresh) = (&self.order, &self.fresh);
+        let n = order.len();
+        let mut jobs: Vec<_> = crate::parallel::split_ranges(&mut self.points, runs(n))
+            .into_iter()
+            .zip(crate::parallel::split_ranges(&mut self.velocity, runs(n)))
+            .zip(crate::parallel::split_ranges(&mut self.before, runs(n)))
+            .collect();
+        crate::parallel::for_each(
+            &mut jobs,
+            || (),
+            |(), (((range, points), (_, velocity)), (_, before))| {
+                for (k, l) in range.clone().enumerate() {
+                    // Every body in a pair has a slot below `slots` (checked below).
+                    if let (true, Some(&(p, v))) = (read[l], fresh.get(order[l] as usize)) {
+                        (points[k], velocity[k], before[k]) = (p, v, v);
+                    }
+                }
+            },
+        );
     }
 
     /// Radii, inverse masses (0 for bodies that do not give way), velocities and

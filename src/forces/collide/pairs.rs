@@ -140,7 +140,7 @@ pub(super) struct RunPairs {
 const RUN: usize = 1_024;
 
 /// The pairs a run of the warm start looks up.
-const WARM_RUN: usize = 4_096;
+const WARM_RUN: usize = 1_024;
 
 /// What the test of a candidate pair reads, by local index.
 struct Candidates<'a> {
@@ -408,7 +408,7 @@ impl Collide {
         } else {
             WARM_RUN
         };
-        let runs = (0..last.len().div_ceil(run)).map(|r| r * run..((r + 1) * run).min(last.len()));
+        let runs = parallel::runs(last.len(), run);
         let mut jobs = parallel::split_ranges(warm, runs);
         let (local, rows, pairs_found): (&[u32], &[u32], &[Pair]) = (local, rows, pairs);
         parallel::for_each(

@@ -331,6 +331,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     /// Number of slots (one per body), the length of every per-slot buffer.
     pub(crate) fn slot_count(&self) -> usize {
+        debug_assert_eq!(self.ids.len(), self.slots.len(), "an id for every slot");
         self.slots.len()
     }
 

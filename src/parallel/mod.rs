@@ -43,16 +43,6 @@ pub(crate) fn for_each<T: Send, S>(
 #[cfg(feature = "parallel")]
 const PARALLEL_SORT: usize = 32_768;
 
-/// Sorts `items` (stable): on rayon's pool under `parallel` (from [`PARALLEL_SORT`] items on). Both give the same order.
-pub(crate) fn sort<T: Ord + Send>(items: &mut [T]) {
-    #[cfg(feature = "parallel")]
-    if items.len() >= PARALLEL_SORT {
-        items.par_sort();
-        return;
-    }
-    items.sort();
-}
-
 /// Sorts `items` (unstable): on rayon's pool under `parallel` (from [`PARALLEL_SORT`]
 /// items on). For items that are all
 /// different, as every use's are, both give the same order.

@@ -376,7 +376,8 @@ impl Collide {
             || (),
             |(), (((range, points), (_, velocity)), (_, before))| {
                 for (k, l) in range.clone().enumerate() {
-                    // Every body in a pair has a slot below `slots` (checked below).
+                    // Every body in a pair has a slot below `slots` (`relax` checks it in
+                    // debug builds); one beyond would be skipped, as it always was.
                     if let (true, Some(&(p, v))) = (read[l], fresh.get(order[l] as usize)) {
                         (points[k], velocity[k], before[k]) = (p, v, v);
                     }

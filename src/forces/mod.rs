@@ -407,8 +407,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
                 }
             },
         );
-        let lost: Vec<usize> = jobs.into_iter().flat_map(|(.., lost)| lost).collect();
-        for s in lost {
+        for s in jobs.into_iter().flat_map(|(.., lost)| lost) {
             world.mark_changed(s);
         }
     }

@@ -202,16 +202,11 @@ impl SpringForce {
         pulls.clear();
         pulls.resize(links.len(), [None; 2]);
         let runs = |len: usize| parallel::runs(len, RUN);
-        let mut jobs = parallel::split_ranges(pulls, runs(links.len()));
-        parallel::for_each(
-            &mut jobs,
-            || (),
-            |(), (range, pulls)| {
-                for (p, link) in pulls.iter_mut().zip(&links[range.clone()]) {
-                    *p = pull.ends(link, bodies);
-                }
-            },
-        );
+        parallel::for_each_run(pulls, RUN, |range, pulls| {
+            for (p, link) in pulls.iter_mut().zip(&links[range]) {
+                *p = pull.ends(link, bodies);
+            }
+        });
         let pulls: &[[EndPull; 2]] = pulls;
         let mut jobs: Vec<_> = parallel::split_ranges(&mut out.springs[..n], runs(n))
             .into_iter()

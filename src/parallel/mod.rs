@@ -62,6 +62,21 @@ pub(crate) fn runs(len: usize, run: usize) -> impl Iterator<Item = std::ops::Ran
     (0..len.div_ceil(run)).map(move |r| r * run..((r + 1) * run).min(len))
 }
 
+/// Runs `f` on `buffer` cut into runs of `run` items ([`runs`]), each run with its range
+/// of indices: side by side under `parallel`, in order otherwise (see [`for_each`]).
+pub(crate) fn for_each_run<T: Send>(
+    buffer: &mut [T],
+    run: usize,
+    f: impl Fn(std::ops::Range<usize>, &mut [T]) + Sync + Send,
+) {
+    let mut jobs = split_ranges(buffer, runs(buffer.len(), run));
+    for_each(
+        &mut jobs,
+        || (),
+        |(), (range, items)| f(range.clone(), items),
+    );
+}
+
 /// Splits `buffer` into the disjoint, ascending `ranges` of it, each with its range.
 ///
 /// # Panics

@@ -248,20 +248,14 @@ impl Collide {
         self.changes.resize(n, Vector2D::zero());
         if self.softness.is_some() {
             let (local, velocity, before) = (&self.local, &self.velocity, &self.before);
-            let runs = crate::parallel::runs(n, READ_RUN);
-            let mut jobs = crate::parallel::split_ranges(&mut self.changes, runs);
-            crate::parallel::for_each(
-                &mut jobs,
-                || (),
-                |(), (range, changes)| {
-                    for (change, s) in changes.iter_mut().zip(range.clone()) {
-                        let l = local.get(s).map_or(NONE, |&l| l) as usize;
-                        if let (Some(&v), Some(&b)) = (velocity.get(l), before.get(l)) {
-                            *change = v - b;
-                        }
+            crate::parallel::for_each_run(&mut self.changes, READ_RUN, |range, changes| {
+                for (change, s) in changes.iter_mut().zip(range) {
+                    let l = local.get(s).map_or(NONE, |&l| l) as usize;
+                    if let (Some(&v), Some(&b)) = (velocity.get(l), before.get(l)) {
+                        *change = v - b;
                     }
-                },
-            );
+                }
+            });
         }
         &self.changes
     }
@@ -295,28 +289,21 @@ impl Collide {
             &self.radius,
             self.boxes,
         );
-        let count = self.pairs.len();
-        let runs = crate::parallel::runs(count, SEPARATION_RUN);
-        let mut jobs = crate::parallel::split_ranges(&mut self.pairs, runs);
-        crate::parallel::for_each(
-            &mut jobs,
-            || (),
-            |(), (_, pairs)| {
-                for pair in pairs.iter_mut() {
-                    let (a, b) = (pair.a as usize, pair.b as usize);
-                    let d = points[b] - points[a];
-                    let outline = if boxes {
-                        box_contact(inner, round, (a, b), d, Side::CentreLine, || pair.normal)
-                    } else {
-                        None
-                    };
-                    pair.separation = match outline {
-                        Some((_, separation)) => separation,
-                        None => d.length() - (radius[a] + radius[b]),
-                    };
-                }
-            },
-        );
+        crate::parallel::for_each_run(&mut self.pairs, SEPARATION_RUN, |_, pairs| {
+            for pair in pairs.iter_mut() {
+                let (a, b) = (pair.a as usize, pair.b as usize);
+                let d = points[b] - points[a];
+                let outline = if boxes {
+                    box_contact(inner, round, (a, b), d, Side::CentreLine, || pair.normal)
+                } else {
+                    None
+                };
+                pair.separation = match outline {
+                    Some((_, separation)) => separation,
+                    None => d.length() - (radius[a] + radius[b]),
+                };
+            }
+        });
         for _ in 0..RELAX_PASSES {
             if self.pass(world, None, 1.0 / dt) < SETTLED_CHANGE {
                 break;
@@ -349,21 +336,16 @@ impl Collide {
         self.fresh
             .resize(local.len(), (Point2D::origin(), Vector2D::zero()));
         let runs = |n: usize| crate::parallel::runs(n, READ_RUN);
-        let mut jobs = crate::parallel::split_ranges(&mut self.fresh, runs(local.len()));
-        crate::parallel::for_each(
-            &mut jobs,
-            || (),
-            |(), (range, fresh)| {
-                for (k, s) in range.clone().enumerate() {
-                    let l = local[s];
-                    if l != NONE && read[l as usize] {
-                        let body = view.body_at(s);
-                        let (t, v) = (body.translation(), body.linvel());
-                        fresh[k] = (Point2D::new(t.x, t.y), Vector2D::new(v.x, v.y));
-                    }
+        crate::parallel::for_each_run(&mut self.fresh, READ_RUN, |range, fresh| {
+            for (k, s) in range.enumerate() {
+                let l = local[s];
+                if l != NONE && read[l as usize] {
+                    let body = view.body_at(s);
+                    let (t, v) = (body.translation(), body.linvel());
+                    fresh[k] = (Point2D::new(t.x, t.y), Vector2D::new(v.x, v.y));
                 }
-            },
-        );
+            }
+        });
         let (order, fresh) = (&self.order, &self.fresh);
         let n = order.len();
         let mut jobs: Vec<_> = crate::parallel::split_ranges(&mut self.points, runs(n))

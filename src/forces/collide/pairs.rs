@@ -408,29 +408,22 @@ impl Collide {
         } else {
             WARM_RUN
         };
-        let runs = parallel::runs(last.len(), run);
-        let mut jobs = parallel::split_ranges(warm, runs);
         let (local, rows, pairs_found): (&[u32], &[u32], &[Pair]) = (local, rows, pairs);
-        parallel::for_each(
-            &mut jobs,
-            || (),
-            |(), (range, found)| {
-                for (k, &(sa, sb, _)) in found.iter_mut().zip(&last[range.clone()]) {
-                    let (Some(&a), Some(&b)) = (local.get(sa as usize), local.get(sb as usize))
-                    else {
-                        continue;
-                    };
-                    if a == NONE || b == NONE {
-                        continue;
-                    }
-                    let (a, b) = (a.min(b), a.max(b));
-                    let row = rows[a as usize] as usize..rows[a as usize + 1] as usize;
-                    if let Some(at) = row.into_iter().find(|&k| pairs_found[k].b == b) {
-                        *k = at as u32;
-                    }
+        parallel::for_each_run(warm, run, |range, found| {
+            for (k, &(sa, sb, _)) in found.iter_mut().zip(&last[range]) {
+                let (Some(&a), Some(&b)) = (local.get(sa as usize), local.get(sb as usize)) else {
+                    continue;
+                };
+                if a == NONE || b == NONE {
+                    continue;
                 }
-            },
-        );
+                let (a, b) = (a.min(b), a.max(b));
+                let row = rows[a as usize] as usize..rows[a as usize + 1] as usize;
+                if let Some(at) = row.into_iter().find(|&k| pairs_found[k].b == b) {
+                    *k = at as u32;
+                }
+            }
+        });
         for (&k, &(_, _, impulse)) in warm.iter().zip(last.iter()) {
             if k != NONE {
                 let (k, pair) = (k as usize, &pairs[k as usize]);

@@ -169,6 +169,9 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
         match desired {
             None => {
                 freeze(self.world, s, current, body_pos);
+                // The pin is part of the topology whatever the node's values: recorded
+                // here too, so the next call's match sees an unpin of a frozen node.
+                self.world.host_at_mut(s).pinned = m.pinned;
                 return disturbed;
             }
             Some(RigidBodyType::Dynamic) => {

@@ -37,6 +37,7 @@ pub(crate) mod barnes_hut;
 mod bodies;
 mod center;
 pub(crate) mod collide;
+mod counting_sort;
 mod group;
 pub(crate) mod many_body;
 mod position;

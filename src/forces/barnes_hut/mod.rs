@@ -208,7 +208,7 @@ pub struct ManyBody {
     /// sort's buffers.
     entries: Vec<(u64, u32)>,
     scratch: Vec<(u64, u32)>,
-    starts: Vec<u32>,
+    ends: Vec<u32>,
     /// The cells still to split.
     work: Vec<Work>,
     /// The subtrees of a large tree, each with its own cells.
@@ -266,7 +266,7 @@ impl ManyBody {
         // Adaptive: the last build's order is nearly this one. Codes tie only within a
         // deepest leaf, whose points then go in index order, whatever the last order
         // (and the entries are unique, so any sort gives the same order).
-        order::sort_entries(&mut self.entries, &mut self.scratch, &mut self.starts);
+        order::sort_entries(&mut self.entries, &mut self.scratch, &mut self.ends);
         self.index.extend(self.entries.iter().map(|e| e.1));
         self.sorted
             .extend(self.index.iter().map(|&i| points[i as usize]));

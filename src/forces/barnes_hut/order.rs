@@ -6,6 +6,7 @@
 //! Below that, one whole sort on the calling thread. A whole sort of 10,000 entries was
 //! a quarter of a millisecond on the calling thread.
 
+use crate::forces::counting_sort::counting_sort;
 use crate::parallel;
 
 /// From this many entries on, the sort goes bucket by bucket.
@@ -20,11 +21,11 @@ const SORT_RUN: usize = 1_024;
 /// The codes' width: two bits per depth down to the deepest (`MAX_DEPTH`).
 const CODE_BITS: u32 = 2 * super::MAX_DEPTH;
 
-/// Sorts `entries` by code, then index, with `scratch` and `starts` as buffers.
+/// Sorts `entries` by code, then index, with `scratch` and `ends` as buffers.
 pub(super) fn sort_entries(
     entries: &mut Vec<(u64, u32)>,
     scratch: &mut Vec<(u64, u32)>,
-    starts: &mut Vec<u32>,
+    ends: &mut Vec<u32>,
 ) {
     if entries.len() < BUCKETS_FROM {
         entries.sort();
@@ -32,36 +33,21 @@ pub(super) fn sort_entries(
     }
     let bucket = |code: u64| (code >> (CODE_BITS - BUCKET_BITS)) as usize;
     let buckets = 1_usize << BUCKET_BITS;
-    starts.clear();
-    starts.resize(buckets + 1, 0);
-    for &(code, _) in entries.iter() {
-        starts[bucket(code) + 1] += 1;
-    }
-    for b in 0..buckets {
-        starts[b + 1] += starts[b];
-    }
     // Stable: each bucket keeps the order it had (the last build's, nearly sorted).
-    scratch.clear();
-    scratch.resize(entries.len(), (0, 0));
-    let mut next = [0_u32; 1 << BUCKET_BITS];
-    next.copy_from_slice(&starts[..buckets]);
-    for &entry in entries.iter() {
-        let at = &mut next[bucket(entry.0)];
-        scratch[*at as usize] = entry;
-        *at += 1;
-    }
+    counting_sort(entries, scratch, ends, buckets, bucket);
     std::mem::swap(entries, scratch);
+    // Bucket `b` starts where the one before it ends.
+    let ends: &[u32] = ends;
+    let at = |b: usize| if b == 0 { 0 } else { ends[b - 1] as usize };
     // Runs of whole buckets of about SORT_RUN entries, each bucket sorted on its own.
     let mut runs = Vec::new();
     let mut first = 0;
     for b in 1..=buckets {
-        if b == buckets || (starts[b] - starts[first]) as usize >= SORT_RUN {
+        if b == buckets || at(b) - at(first) >= SORT_RUN {
             runs.push(first..b);
             first = b;
         }
     }
-    let starts: &[u32] = starts;
-    let at = |b: usize| starts[b] as usize;
     let mut jobs = parallel::split_ranges(entries, runs.iter().map(|r| at(r.start)..at(r.end)));
     let mut jobs: Vec<_> = jobs.iter_mut().zip(&runs).collect();
     parallel::for_each(

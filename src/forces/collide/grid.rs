@@ -7,6 +7,7 @@
 use euclid::default::{Point2D, Vector2D};
 
 use super::pairs::{PAIRS_AT_LEAST, PAIRS_PER_BODY};
+use crate::forces::counting_sort::counting_sort;
 use crate::parallel;
 
 /// A cell's key: row in the high half, column in the low half, both offset to be
@@ -73,32 +74,6 @@ fn sort_cells(cells: &mut Vec<(u64, u32)>, scratch: &mut Vec<(u64, u32)>, counts
     let by_row = |k: u64| (row_and_column(k).0 - top) as usize;
     counting_sort(cells, scratch, counts, columns as usize, by_column);
     counting_sort(scratch, cells, counts, rows as usize, by_row);
-}
-
-/// Moves `from` into `to` ordered by `bucket` (below `buckets`), keeping the order of
-/// entries in the same bucket.
-fn counting_sort(
-    from: &[(u64, u32)],
-    to: &mut Vec<(u64, u32)>,
-    counts: &mut Vec<u32>,
-    buckets: usize,
-    bucket: impl Fn(u64) -> usize,
-) {
-    counts.clear();
-    counts.resize(buckets + 1, 0);
-    for &(k, _) in from {
-        counts[bucket(k) + 1] += 1;
-    }
-    for b in 0..buckets {
-        counts[b + 1] += counts[b];
-    }
-    to.clear();
-    to.resize(from.len(), (0, 0));
-    for &entry in from {
-        let at = &mut counts[bucket(entry.0)];
-        to[*at as usize] = entry;
-        *at += 1;
-    }
 }
 
 impl Grid {

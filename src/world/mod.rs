@@ -313,7 +313,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     }
 
     pub(crate) fn body_at(&self, slot: usize) -> &RigidBody {
-        &self.bodies[self.slots[slot].body]
+        self.slots_view().body_at(slot)
     }
 
     pub(crate) fn body_at_mut(&mut self, slot: usize) -> &mut RigidBody {

@@ -8,21 +8,21 @@
 use std::collections::{HashMap, VecDeque};
 use std::hash::Hash;
 
+use euclid::default::Point2D;
 use rapier2d::prelude::{
-    BroadPhaseBvh, CCDSolver, ColliderSet, ImpulseJointSet, IntegrationParameters, IslandManager,
-    MultibodyJointSet, NarrowPhase, PhysicsPipeline, RigidBodySet, SoftBodySet,
+    BroadPhaseBvh, CCDSolver, ColliderHandle, ColliderSet, ImpulseJointSet, IntegrationParameters,
+    IslandManager, MultibodyJointSet, NarrowPhase, PhysicsPipeline, RigidBodyHandle, RigidBodySet,
+    SoftBodySet,
 };
 use serde::{Deserialize, Serialize};
 
+use super::bindings::ColliderSpec;
 use super::events::{CollisionCollector, SceneEvent};
 use super::slot::{HostSync, JointSlot, NodeSlot};
 use super::spring_scale::{SpringScale, StretchCache};
 use super::{RapierSceneWorld, WorldOptions};
 use crate::input::snapshot_error::SnapshotError;
 use crate::layout::IdHasher;
-use crate::world::bindings::ColliderSpec;
-use euclid::default::Point2D;
-use rapier2d::prelude::{ColliderHandle, RigidBodyHandle};
 
 /// Everything a world needs to continue where it was.
 #[derive(Clone, Serialize, Deserialize)]

@@ -129,7 +129,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     /// The adapter's sync state of the node in `slot`.
     pub(crate) fn host_at(&self, slot: usize) -> &HostSync {
-        &self.slots[slot].host
+        self.slots_view().host_at(slot)
     }
 
     /// The adapter's sync state of the node in `slot`, to update.
@@ -159,7 +159,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     /// The mass of the body in `slot`.
     pub(crate) fn mass_at(&self, slot: usize) -> f32 {
-        self.slots[slot].mass
+        self.slots_view().mass_at(slot)
     }
 
     /// The shape of the node in `slot`.
@@ -176,9 +176,9 @@ pub(crate) struct SlotsView<'a> {
     slots: &'a [NodeSlot],
 }
 
-impl SlotsView<'_> {
+impl<'a> SlotsView<'a> {
     /// The body in `slot`.
-    pub(crate) fn body_at(&self, slot: usize) -> &RigidBody {
+    pub(crate) fn body_at(&self, slot: usize) -> &'a RigidBody {
         &self.bodies[self.slots[slot].body]
     }
 
@@ -188,7 +188,7 @@ impl SlotsView<'_> {
     }
 
     /// The adapter's sync state of the node in `slot`.
-    pub(crate) fn host_at(&self, slot: usize) -> &HostSync {
+    pub(crate) fn host_at(&self, slot: usize) -> &'a HostSync {
         &self.slots[slot].host
     }
 }

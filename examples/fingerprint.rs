@@ -16,33 +16,9 @@ use graph_canvas_layout::{
 
 mod common;
 
-use common::load;
+use common::{load, Fnv};
 
 const FRAME: f32 = 1.0 / 60.0;
-
-/// FNV-1a over 64 bits: stable across builds and platforms.
-struct Fnv(u64);
-
-impl Hasher for Fnv {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-    fn write(&mut self, bytes: &[u8]) {
-        for b in bytes {
-            self.0 ^= u64::from(*b);
-            self.0 = self.0.wrapping_mul(0x100_0000_01b3);
-        }
-    }
-}
-
-impl Fnv {
-    fn new() -> Self {
-        Self(0xcbf2_9ce4_8422_2325)
-    }
-    fn f32(&mut self, x: f32) {
-        self.write_u32(x.to_bits());
-    }
-}
 
 /// A small deterministic generator (xorshift64*).
 struct Rng(u64);

@@ -13,6 +13,7 @@
 
 mod common;
 
+use std::hash::Hasher;
 use std::time::{Duration, Instant};
 
 use common::*;
@@ -167,7 +168,9 @@ fn main() {
 
 /// An FNV-1a hash of the final positions' bits, to compare builds by.
 fn digest(bits: &[u32]) -> u64 {
-    bits.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
-    })
+    let mut hash = Fnv::new();
+    for &b in bits {
+        hash.write_u32(b);
+    }
+    hash.finish()
 }

@@ -4,6 +4,8 @@
 
 pub mod svg;
 
+use std::hash::Hasher;
+
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
     CanvasSceneInput, CanvasViewport, DeltaMap, Layout, LayoutExtras, RapierLayout,
@@ -24,6 +26,30 @@ pub fn load(name: &str) -> CanvasSceneInput<u32> {
     serde_json::from_str::<SceneFile>(&text)
         .unwrap_or_else(|e| panic!("{path}: {e}"))
         .into_scene()
+}
+
+/// FNV-1a over 64 bits: stable across builds and platforms.
+pub struct Fnv(pub u64);
+
+impl Hasher for Fnv {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for b in bytes {
+            self.0 ^= u64::from(*b);
+            self.0 = self.0.wrapping_mul(0x100_0000_01b3);
+        }
+    }
+}
+
+impl Fnv {
+    pub fn new() -> Self {
+        Self(0xcbf2_9ce4_8422_2325)
+    }
+    pub fn f32(&mut self, x: f32) {
+        self.write_u32(x.to_bits());
+    }
 }
 
 /// The `q` quantile (0 to 1) of `sorted`, the nearest rank; 0 for no values.

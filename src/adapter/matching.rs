@@ -131,7 +131,10 @@ impl<N: Clone + Eq + Hash> Matching<N> {
                     let host = world.host_at_mut(s);
                     host.stamp = stamp;
                     seen += 1;
+                    // Recorded here, for every matched node whatever its values or
+                    // sync: a pin counts in the topology of any node with a body.
                     changed |= host.pinned != pinned;
+                    host.pinned = pinned;
                     s as u32
                 }
                 Some(_) => {

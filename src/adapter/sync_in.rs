@@ -169,9 +169,6 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
         match desired {
             None => {
                 freeze(self.world, s, current, body_pos);
-                // The pin is part of the topology whatever the node's values: recorded
-                // here too, so the next call's match sees an unpin of a frozen node.
-                self.world.host_at_mut(s).pinned = m.pinned;
                 return disturbed;
             }
             Some(RigidBodyType::Dynamic) => {
@@ -212,7 +209,6 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
         self.world.set_anchor_at(s, host);
         let sync = self.world.host_at_mut(s);
         sync.fresh = false;
-        sync.pinned = m.pinned;
         sync.told = host;
         if dragging {
             track_drag(

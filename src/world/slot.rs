@@ -42,6 +42,7 @@ pub(crate) struct HostSync {
     pub(crate) told: Point2D<f32>,
     /// Call number in which the adapter last saw this node in the scene.
     pub(crate) stamp: u64,
+    /// Whether the node was pinned when last matched (the match compares against it).
     pub(crate) pinned: bool,
     pub(crate) dragging: bool,
     /// The host's position of a dragged node at the last call, the pointer's velocity

@@ -77,6 +77,62 @@ pub(crate) fn for_each_run<T: Send>(
     );
 }
 
+/// Whether work handed to [`for_each`] may run on more than one thread: under
+/// `parallel`, on a pool of two threads or more.
+fn side_by_side() -> bool {
+    #[cfg(feature = "parallel")]
+    return rayon::current_num_threads() > 1;
+    #[cfg(not(feature = "parallel"))]
+    false
+}
+
+/// Fills `out` with `make(i)` for every `i` of `0..len` that `keep(i)` takes, in order,
+/// from runs of `run` indices side by side under `parallel` (on a pool of two threads or
+/// more): each run counts what it keeps, then writes it at its place; in one pass in
+/// order otherwise. The same items in the same order on any number
+/// of threads.
+pub(crate) fn collect_runs<U: Copy + Default + Send>(
+    len: usize,
+    run: usize,
+    out: &mut Vec<U>,
+    keep: impl Fn(usize) -> bool + Sync + Send,
+    make: impl Fn(usize) -> U + Sync + Send,
+) {
+    if !side_by_side() || len <= run {
+        out.clear();
+        out.extend((0..len).filter(|&i| keep(i)).map(make));
+        return;
+    }
+    let mut counted: Vec<(std::ops::Range<usize>, usize)> =
+        runs(len, run).map(|r| (r, 0)).collect();
+    for_each(
+        &mut counted,
+        || (),
+        |(), (range, count)| *count = range.clone().filter(|&i| keep(i)).count(),
+    );
+    out.clear();
+    out.resize(counted.iter().map(|&(_, c)| c).sum(), U::default());
+    let mut at = 0;
+    let places = counted.iter().map(|&(_, c)| {
+        at += c;
+        at - c..at
+    });
+    let mut jobs: Vec<_> = split_ranges(out, places)
+        .into_iter()
+        .zip(counted.iter().map(|(range, _)| range.clone()))
+        .collect();
+    for_each(
+        &mut jobs,
+        || (),
+        |(), ((_, out), range)| {
+            let kept = range.clone().filter(|&i| keep(i));
+            for (slot, i) in out.iter_mut().zip(kept) {
+                *slot = make(i);
+            }
+        },
+    );
+}
+
 /// Splits `buffer` into the disjoint, ascending `ranges` of it, each with its range.
 ///
 /// # Panics

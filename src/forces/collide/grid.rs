@@ -19,6 +19,9 @@ fn key(x: i64, y: i64) -> u64 {
 /// Fast bodies a run of the search along their paths takes (fixed, so the pairs found do
 /// not depend on the thread count).
 const FAST_RUN: usize = 128;
+/// Bodies a run of the per-body maps of [`Grid::sort`] takes (side by side under
+/// `parallel`; each body's value its own).
+const MAP_RUN: usize = 2_048;
 
 /// The most pairs a run of `bodies` fast bodies holds before it stops and is searched
 /// again in order: what the pair search allows its bodies (`pairs.rs`), so the runs
@@ -100,7 +103,12 @@ impl Grid {
             Vector2D::new(l.x.max(h.x), l.y.max(h.y))
         });
         self.lengths.clear();
-        self.lengths.extend(motion.iter().map(|m| m.length()));
+        self.lengths.resize(motion.len(), 0.0);
+        parallel::for_each_run(&mut self.lengths, MAP_RUN, |range, lengths| {
+            for (l, m) in lengths.iter_mut().zip(&motion[range]) {
+                *l = m.length();
+            }
+        });
         let usual = if self.lengths.is_empty() {
             0.0
         } else {
@@ -111,13 +119,15 @@ impl Grid {
         let side = |largest: f32| (2.0 * largest + 2.0 * self.usual).max(1.0);
         self.cell = Vector2D::new(side(self.largest.x), side(self.largest.y));
         let cell = self.cell;
-        self.cells.clear();
-        self.cells.extend(
-            points
-                .iter()
-                .enumerate()
-                .filter(|&(s, p)| p.is_finite() && keep.get(s).is_none_or(|&k| k))
-                .map(|(s, &p)| (key(index(p.x, cell.x), index(p.y, cell.y)), s as u32)),
+        parallel::collect_runs(
+            points.len(),
+            MAP_RUN,
+            &mut self.cells,
+            |s| points[s].is_finite() && keep.get(s).is_none_or(|&k| k),
+            |s| {
+                let p = points[s];
+                (key(index(p.x, cell.x), index(p.y, cell.y)), s as u32)
+            },
         );
         sort_cells(&mut self.cells, &mut self.scratch, &mut self.counts);
         self.cells.iter().map(|&(_, s)| s)

@@ -178,8 +178,12 @@ pub(crate) struct Collide {
     /// Where the blocks of the grid's order that the passes solve side by side start
     /// (`passes.rs`), and the end of the last, as local indices.
     blocks: Vec<u32>,
-    /// The pairs between two blocks, by index, in order.
+    /// The pairs from one block into the next, by boundary: each boundary's in order,
+    /// as indices from its first block's first pair, starting at `across_ends[j]`.
     across: Vec<u32>,
+    across_ends: Vec<u32>,
+    /// The pairs reaching past the next block, by index, in order.
+    far: Vec<u32>,
 }
 
 impl Collide {
@@ -369,7 +373,8 @@ impl Collide {
     }
 
     /// Radii, inverse masses (0 for bodies that do not give way), velocities and
-    /// predicted motion, by slot.
+    /// predicted motion, by slot, in runs side by side under `parallel`; then the
+    /// bodies that move, in slot order.
     fn prepare<N: Clone + Eq + Hash>(
         &mut self,
         world: &RapierSceneWorld<N>,
@@ -380,27 +385,46 @@ impl Collide {
         by_slot.clear_motion();
         by_slot.read_shapes(world);
         by_slot.sleeping.extend_from_slice(&bodies.sleeping);
-        self.moving.clear();
-        for (s, &p) in bodies.points.iter().enumerate() {
-            let (inverse_mass, velocity) = if bodies.pushed[s] {
-                (1.0 / world.mass_at(s), bodies.velocities[s])
-            } else {
-                // Driven (kinematic) bodies move to where they are driven; the rest stay.
-                (0.0, (bodies.next[s] - p) / dt)
-            };
-            let velocity = if velocity.is_finite() {
-                velocity
-            } else {
-                Vector2D::zero()
-            };
-            let motion = velocity * dt;
-            if (inverse_mass > 0.0 || motion != Vector2D::zero()) && p.is_finite() {
-                self.moving.push(s as u32);
-            }
-            by_slot.inverse_mass.push(inverse_mass);
-            by_slot.velocity.push(velocity);
-            by_slot.motion.push(motion);
-        }
+        let n = bodies.points.len();
+        by_slot.inverse_mass.resize(n, 0.0);
+        by_slot.velocity.resize(n, Vector2D::zero());
+        by_slot.motion.resize(n, Vector2D::zero());
+        let view = world.slots_view();
+        let runs = || crate::parallel::runs(n, READ_RUN);
+        let mut jobs: Vec<_> = crate::parallel::split_ranges(&mut by_slot.inverse_mass, runs())
+            .into_iter()
+            .zip(crate::parallel::split_ranges(&mut by_slot.velocity, runs()))
+            .zip(crate::parallel::split_ranges(&mut by_slot.motion, runs()))
+            .collect();
+        crate::parallel::for_each(
+            &mut jobs,
+            || (),
+            |(), (((range, inverse_mass), (_, velocity)), (_, motion))| {
+                for (k, s) in range.clone().enumerate() {
+                    let p = bodies.points[s];
+                    let (w, v) = if bodies.pushed[s] {
+                        (1.0 / view.mass_at(s), bodies.velocities[s])
+                    } else {
+                        // Driven (kinematic) bodies move to where they are driven; the
+                        // rest stay.
+                        (0.0, (bodies.next[s] - p) / dt)
+                    };
+                    let v = if v.is_finite() { v } else { Vector2D::zero() };
+                    (inverse_mass[k], velocity[k], motion[k]) = (w, v, v * dt);
+                }
+            },
+        );
+        let (inverse_mass, motion) = (&by_slot.inverse_mass, &by_slot.motion);
+        crate::parallel::collect_runs(
+            n,
+            READ_RUN,
+            &mut self.moving,
+            |s| {
+                (inverse_mass[s] > 0.0 || motion[s] != Vector2D::zero())
+                    && bodies.points[s].is_finite()
+            },
+            |s| s as u32,
+        );
     }
 
     /// The inverse mass each sleeping body in the grid's order takes when it wakes.
@@ -416,19 +440,20 @@ impl Collide {
             }));
     }
 
-    /// Each pair's shares of a change of its relative speed, from the inverse masses.
+    /// Each pair's shares of a change of its relative speed, from the inverse masses,
+    /// in runs of pairs side by side under `parallel`.
     fn share(&mut self) {
-        for pair in &mut self.pairs {
-            let (wa, wb) = (
-                self.inverse_mass[pair.a as usize],
-                self.inverse_mass[pair.b as usize],
-            );
-            let total = wa + wb;
-            (pair.share_a, pair.share_b) = if total > 0.0 {
-                (wa / total, wb / total)
-            } else {
-                (0.0, 0.0)
-            };
-        }
+        let inverse_mass = &self.inverse_mass;
+        crate::parallel::for_each_run(&mut self.pairs, SEPARATION_RUN, |_, pairs| {
+            for pair in pairs {
+                let (wa, wb) = (inverse_mass[pair.a as usize], inverse_mass[pair.b as usize]);
+                let total = wa + wb;
+                (pair.share_a, pair.share_b) = if total > 0.0 {
+                    (wa / total, wb / total)
+                } else {
+                    (0.0, 0.0)
+                };
+            }
+        });
     }
 }

@@ -433,16 +433,19 @@ impl Collide {
         }
     }
 
-    /// Keeps the impulses of the pairs that pushed, by their slots, for the next substep.
+    /// Keeps the impulses of the pairs that pushed, by their slots, for the next
+    /// substep: found in runs of pairs side by side under `parallel`, kept in order.
     pub(super) fn keep_impulses(&mut self, version: u64) {
-        self.last.clear();
-        let order = &self.order;
-        self.last.extend(
-            self.pairs
-                .iter()
-                .zip(&self.impulses)
-                .filter(|(_, &impulse)| impulse > 0.0)
-                .map(|(p, &impulse)| (order[p.a as usize], order[p.b as usize], impulse)),
+        let (order, pairs, impulses) = (&self.order, &self.pairs, &self.impulses);
+        parallel::collect_runs(
+            pairs.len(),
+            RUN,
+            &mut self.last,
+            |k| impulses[k] > 0.0,
+            |k| {
+                let p = pairs[k];
+                (order[p.a as usize], order[p.b as usize], impulses[k])
+            },
         );
         self.last_version = Some(version);
     }

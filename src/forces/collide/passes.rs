@@ -4,16 +4,21 @@
 //! pair's two bodies sit in the same or a neighbouring cell. Cut that order into blocks
 //! of consecutive bodies, and most pairs lie inside one block: a block's pairs touch
 //! only its own bodies' velocities, so the blocks are solved side by side under
-//! `parallel`, and the few pairs between two blocks after them, in order. That is one
-//! Gauss–Seidel order (block by block, then the pairs across), whatever the number of
-//! threads: the blocks are cut by the pairs' count, never by the pool's size, so a pass
-//! gives the same bits on any number of threads.
+//! `parallel`. The few pairs from one block into the next follow, by the boundary they
+//! cross: those of boundaries 0, 2, 4, … side by side (each touches only its two
+//! blocks, and no two of these share one), then those of 1, 3, 5, …; the rare pair
+//! reaching past the next block comes last, in order. That is one Gauss–Seidel order,
+//! whatever the number of threads: the blocks are cut by the pairs' count, never by the
+//! pool's size, so a pass gives the same bits on any number of threads. (Where a block
+//! spans more than two rows of cells, the pairs of two boundaries share no body, and the
+//! order gives the bits of the pairs across solved in index order.)
 //!
 //! Without `parallel`, or with fewer than 8,192 pairs, there is one block, and the passes
 //! solve the pairs in the order they always have.
 
 use euclid::default::Vector2D;
 use std::hash::Hash;
+use std::ops::Range;
 
 use super::pairs::Pair;
 use super::{Collide, Softness, MAX_PUSH_SPEED, SLEEPING_OVERLAP, STREAMS, WAKE_SPEED};
@@ -210,7 +215,8 @@ impl Collide {
     }
 
     /// Cuts the grid's order into `blocks` blocks of about as many pairs each (fewer
-    /// where a body holds more than a block's share).
+    /// where a body holds more than a block's share), and sorts the pairs between two
+    /// blocks by the boundary they cross.
     fn cut_into(&mut self, blocks: usize) {
         let (bodies, count) = (self.order.len(), self.pairs.len());
         self.blocks.clear();
@@ -224,15 +230,24 @@ impl Collide {
         }
         self.blocks.push(bodies as u32);
         self.across.clear();
+        self.across_ends.clear();
+        self.far.clear();
         if blocks > 1 {
-            for w in self.blocks.windows(2) {
-                let pairs = self.rows[w[0] as usize] as usize..self.rows[w[1] as usize] as usize;
-                for k in pairs {
-                    if self.pairs[k].b >= w[1] {
-                        self.across.push(k as u32);
+            // Block `j`'s pairs reaching past it: into the next block (listed by the
+            // boundary, as indices from the block's first pair), or further.
+            for j in 0..blocks - 1 {
+                self.across_ends.push(self.across.len() as u32);
+                let (end, next) = (self.blocks[j + 1], self.blocks[j + 2]);
+                let first = self.rows[self.blocks[j] as usize] as usize;
+                for k in first..self.rows[end as usize] as usize {
+                    match self.pairs[k].b {
+                        b if b < end => {}
+                        b if b < next => self.across.push((k - first) as u32),
+                        _ => self.far.push(k as u32),
                     }
                 }
             }
+            self.across_ends.push(self.across.len() as u32);
         }
     }
 
@@ -272,12 +287,17 @@ impl Collide {
     }
 
     /// [`pass`](Self::pass), with the push (`PUSH`) or without, so the loop carries no
-    /// choice it need not make: the blocks' own pairs side by side, then the pairs
-    /// across blocks. Returns the largest change and the bodies woken, in order.
+    /// choice it need not make: the blocks' own pairs side by side; then the pairs across
+    /// a boundary, those of every other boundary side by side (each set of two
+    /// neighbouring blocks is its own), then those of the boundaries between; then the
+    /// few reaching further, in order. Returns the largest change and the bodies woken,
+    /// in order.
     fn pass_with<const PUSH: bool>(&mut self, rule: PassRule) -> (f32, Vec<u32>) {
         let Self {
             blocks,
             across,
+            across_ends,
+            far,
             rows,
             pairs,
             impulses,
@@ -287,18 +307,100 @@ impl Collide {
             wake_inverse_mass,
             ..
         } = self;
-        let bodies = || blocks.windows(2).map(|w| w[0] as usize..w[1] as usize);
-        let pair_ranges = || {
-            blocks
-                .windows(2)
-                .map(|w| rows[w[0] as usize] as usize..rows[w[1] as usize] as usize)
+        let mut solving = Solving {
+            rows,
+            pairs,
+            impulses,
+            velocity,
+            sleeping,
+            inverse_mass,
+            wake_inverse_mass,
         };
-        let mut lanes: Vec<Lane> = parallel::split_ranges(pairs, pair_ranges())
+        let (mut largest, mut woken) = (0.0_f32, Vec::new());
+        let mut gather = |lanes: Vec<Lane>| {
+            for lane in lanes {
+                largest = largest.max(lane.largest);
+                woken.extend(lane.wake.woken);
+            }
+        };
+        let own: Vec<_> = blocks
+            .windows(2)
+            .map(|w| w[0] as usize..w[1] as usize)
+            .collect();
+        let mut lanes = solving.lanes(&own);
+        if let [lane] = &mut lanes[..] {
+            lane.own_pairs::<PUSH>(rule, true);
+        } else {
+            parallel::for_each(
+                &mut lanes,
+                || (),
+                |(), lane| lane.own_pairs::<PUSH>(rule, false),
+            );
+        }
+        gather(lanes);
+        let boundaries = blocks.len().saturating_sub(2);
+        for phase in 0..2 {
+            let crossed: Vec<usize> = (phase..boundaries).step_by(2).collect();
+            let two: Vec<_> = crossed
+                .iter()
+                .map(|&j| blocks[j] as usize..blocks[j + 2] as usize)
+                .collect();
+            let mut lanes: Vec<_> = solving.lanes(&two).into_iter().zip(crossed).collect();
+            parallel::for_each(
+                &mut lanes,
+                || (),
+                |(), (lane, j)| {
+                    let listed = &across[across_ends[*j] as usize..across_ends[*j + 1] as usize];
+                    lane.listed::<PUSH>(listed, rule);
+                },
+            );
+            gather(lanes.into_iter().map(|(lane, _)| lane).collect());
+        }
+        if !far.is_empty() {
+            let every = 0..solving.velocity.len();
+            let mut lanes = solving.lanes(std::slice::from_ref(&every));
+            lanes[0].listed::<PUSH>(far, rule);
+            gather(lanes);
+        }
+        (largest, woken)
+    }
+}
+
+/// The buffers a pass solves, to cut into lanes.
+struct Solving<'a> {
+    rows: &'a [u32],
+    pairs: &'a mut [Pair],
+    impulses: &'a mut [f32],
+    velocity: &'a mut [Vector2D<f32>],
+    sleeping: &'a mut [bool],
+    inverse_mass: &'a mut [f32],
+    wake_inverse_mass: &'a [f32],
+}
+
+impl Solving<'_> {
+    /// A lane for each of `bodies` (ascending, disjoint ranges of the grid's order),
+    /// with the pairs whose first body is among them.
+    fn lanes(&mut self, bodies: &[Range<usize>]) -> Vec<Lane<'_>> {
+        let rows = self.rows;
+        let pair_ranges = bodies
+            .iter()
+            .map(|r| rows[r.start] as usize..rows[r.end] as usize);
+        let wake_inverse_mass = self.wake_inverse_mass;
+        parallel::split_ranges(self.pairs, pair_ranges.clone())
             .into_iter()
-            .zip(parallel::split_ranges(impulses, pair_ranges()))
-            .zip(parallel::split_ranges(velocity, bodies()))
-            .zip(parallel::split_ranges(sleeping, bodies()))
-            .zip(parallel::split_ranges(inverse_mass, bodies()))
+            .zip(parallel::split_ranges(self.impulses, pair_ranges))
+            .zip(parallel::split_ranges(
+                self.velocity,
+                bodies.iter().cloned(),
+            ))
+            .zip(parallel::split_ranges(
+                self.sleeping,
+                bodies.iter().cloned(),
+            ))
+            .zip(parallel::split_ranges(
+                self.inverse_mass,
+                bodies.iter().cloned(),
+            ))
             .map(
                 |(((((_, pairs), (_, impulses)), (range, velocity)), (_, sleeping)), (_, mass))| {
                     Lane {
@@ -316,41 +418,7 @@ impl Collide {
                     }
                 },
             )
-            .collect();
-        let whole = lanes.len() == 1;
-        if whole {
-            lanes[0].own_pairs::<PUSH>(rule, true);
-        } else {
-            parallel::for_each(
-                &mut lanes,
-                || (),
-                |(), lane| lane.own_pairs::<PUSH>(rule, false),
-            );
-        }
-        let mut largest = 0.0_f32;
-        let mut woken = Vec::new();
-        for lane in lanes {
-            largest = largest.max(lane.largest);
-            woken.extend(lane.wake.woken);
-        }
-        if !across.is_empty() {
-            let mut lane = Lane {
-                first: 0,
-                pairs,
-                impulses,
-                velocity,
-                wake: Wake {
-                    sleeping,
-                    inverse_mass,
-                    wake_inverse_mass,
-                    woken,
-                },
-                largest,
-            };
-            lane.listed::<PUSH>(across, rule);
-            (largest, woken) = (lane.largest, lane.wake.woken);
-        }
-        (largest, woken)
+            .collect()
     }
 }
 

@@ -3,15 +3,10 @@
 //! substep and pushes the awake dynamic ones. The tree is `forces/barnes_hut`; the
 //! centre pull is `forces/center.rs`.
 
-use std::hash::Hash;
-
-use euclid::default::Point2D;
+use euclid::default::{Point2D, Vector2D};
 use serde::{Deserialize, Serialize};
 
 use super::barnes_hut::ManyBody;
-use super::targets::NodeTargets;
-use super::{BodyForce, ForceContext, ForceSums};
-use crate::config::RapierLayoutConfig;
 use crate::sanitize::finite_or;
 
 /// Many-body repulsion and centre pull, applied as forces on every substep.
@@ -56,26 +51,23 @@ pub(crate) struct ManyBodyForce {
     tree: ManyBody,
 }
 
-impl<N: Clone + Eq + Hash> BodyForce<N> for ManyBodyForce {
-    fn is_active(&self, config: &RapierLayoutConfig, _: &NodeTargets) -> bool {
-        config.repulsion.is_some()
-    }
-
-    fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
-        let Some(repulsion) = &frame.config.repulsion else {
-            return;
-        };
-        self.tree.build(frame.points);
-        let strength = finite_or(repulsion.strength, 0.0) * frame.heat;
+impl ManyBodyForce {
+    /// Writes each body's repulsion at `heat` into `forces` (zero for the bodies not
+    /// `pushed`), from a tree built over every point. It writes every entry, so it
+    /// comes before the forces that add to them.
+    pub(crate) fn apply(
+        &mut self,
+        repulsion: &Repulsion,
+        heat: f32,
+        points: &[Point2D<f32>],
+        pushed: &[bool],
+        forces: &mut Vec<Vector2D<f32>>,
+    ) {
+        self.tree.build(points);
+        let strength = finite_or(repulsion.strength, 0.0) * heat;
         let theta = finite_or(repulsion.theta, 0.0).max(0.0);
         let min_distance = finite_or(repulsion.min_distance, 1.0).max(1e-3);
-        // NOTE: writes every entry (others zero), so it must come first in the list.
-        self.tree.forces(
-            strength,
-            theta,
-            min_distance,
-            |s| frame.pushed[s],
-            &mut out.forces,
-        );
+        self.tree
+            .forces(strength, theta, min_distance, |s| pushed[s], forces);
     }
 }

@@ -150,6 +150,11 @@ pub(crate) trait BodyForce<N>: Send + Sync {
 
 /// The forces of a layout, with the buffers one substep sums them in.
 pub(crate) struct Forces<N> {
+    /// The repulsion, which writes every body's force first, and the springs, which
+    /// write sums of their own: the two run side by side under `parallel`.
+    many_body: many_body::ManyBodyForce,
+    springs: springs::SpringForce,
+    /// The forces that add to the repulsion's, in order.
     list: Vec<Box<dyn BodyForce<N>>>,
     bodies: Bodies,
     sums: ForceSums,
@@ -171,16 +176,16 @@ pub(crate) struct Forces<N> {
 impl<N: Clone + Eq + Hash> Default for Forces<N> {
     fn default() -> Self {
         // NOTE: order matters for the float sums (and bit-exact replays): many-body
-        // writes every entry first, the others add to it.
+        // (apart from the list) writes every entry first, these add to it in order.
         let list: Vec<Box<dyn BodyForce<N>>> = vec![
-            Box::new(many_body::ManyBodyForce::default()),
-            Box::new(springs::SpringForce::default()),
             Box::new(center::CenterPull),
             Box::new(position::PositionPull),
             Box::new(radial::RadialPull),
             Box::new(group::GroupPull::default()),
         ];
         Self {
+            many_body: many_body::ManyBodyForce::default(),
+            springs: springs::SpringForce::default(),
             list,
             bodies: Bodies::default(),
             sums: ForceSums::default(),
@@ -293,6 +298,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         self.bodies.forget();
         self.collide.forget_shapes();
         self.applied = false;
+        BodyForce::<N>::reset(&mut self.springs);
         for force in &mut self.list {
             force.reset();
         }
@@ -508,6 +514,29 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             dt,
             targets: &self.targets,
         };
+        // The repulsion (on another thread, if one is free) beside the springs (on this
+        // one: they read the world), each into sums of its own.
+        let mut spring_sums = ForceSums {
+            springs: std::mem::take(&mut self.sums.springs),
+            resistance: std::mem::take(&mut self.sums.resistance),
+            ..ForceSums::default()
+        };
+        let (many_body, forces) = (&mut self.many_body, &mut self.sums.forces);
+        let (points, pushed) = (frame.points, frame.pushed);
+        let springs = &mut self.springs;
+        crate::parallel::beside(
+            || {
+                if let Some(repulsion) = &config.repulsion {
+                    many_body.apply(repulsion, heat, points, pushed, forces);
+                }
+            },
+            || {
+                if BodyForce::<N>::is_active(springs, config, &self.targets) {
+                    springs.apply(&frame, &mut spring_sums);
+                }
+            },
+        );
+        (self.sums.springs, self.sums.resistance) = (spring_sums.springs, spring_sums.resistance);
         for force in &mut self.list {
             if force.is_active(config, &self.targets) {
                 force.apply(&frame, &mut self.sums);

@@ -38,6 +38,35 @@ pub(crate) fn for_each<T: Send, S>(
     }
 }
 
+/// Runs `a` and `b`, side by side under `parallel`, one after the other otherwise.
+pub(crate) fn join<A: Send, B: Send>(
+    a: impl FnOnce() -> A + Send,
+    b: impl FnOnce() -> B + Send,
+) -> (A, B) {
+    #[cfg(feature = "parallel")]
+    return rayon::join(a, b);
+    #[cfg(not(feature = "parallel"))]
+    (a(), b())
+}
+
+/// Runs `job` beside `here` and returns what `here` returns once both are done:
+/// under `parallel`, `job` is handed to rayon's pool for another thread to take while
+/// `here` runs on the calling thread (so `here` may touch what must stay on it), and
+/// the calling thread runs `job` itself if no thread took it; without the feature,
+/// `job` then `here`. The two must not share what they write.
+pub(crate) fn beside<R>(job: impl FnOnce() + Send, here: impl FnOnce() -> R) -> R {
+    #[cfg(feature = "parallel")]
+    return rayon::in_place_scope(|scope| {
+        scope.spawn(|_| job());
+        here()
+    });
+    #[cfg(not(feature = "parallel"))]
+    {
+        job();
+        here()
+    }
+}
+
 /// Below this many items a sort stays on the calling thread: waking the pool's other
 /// threads costs about what they would save.
 #[cfg(feature = "parallel")]

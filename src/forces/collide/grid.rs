@@ -46,6 +46,8 @@ pub(super) struct Grid {
     lengths: Vec<f32>,
     /// The fast bodies' swept boxes `(left, right, top, bottom, body)`.
     swept: Vec<(f32, f32, f32, f32, u32)>,
+    /// The same, sorted by their left edge.
+    by_left: Vec<(f32, f32, f32, f32, u32)>,
     /// Scratch for the sort of the cells.
     scratch: Vec<(u64, u32)>,
     counts: Vec<u32>,
@@ -211,19 +213,20 @@ impl Grid {
         out: &mut Vec<T>,
     ) {
         let usual = self.usual;
-        self.swept.clear();
-        for (a, (&p, &m)) in points.iter().zip(motion).enumerate() {
-            if m.length() <= usual {
-                continue;
-            }
-            let (from, to) = (p, p + m);
-            let (lo, hi) = (from.min(to), from.max(to));
-            // Padded by the half extents and half the usual motion: two fast bodies whose
-            // paths come within their extents and the usual motion overlap.
-            let r = half[a] + Vector2D::new(0.5 * usual, 0.5 * usual);
-            self.swept
-                .push((lo.x - r.x, hi.x + r.x, lo.y - r.y, hi.y + r.y, a as u32));
-        }
+        parallel::collect_runs(
+            points.len(),
+            MAP_RUN,
+            &mut self.swept,
+            |a| motion[a].length() > usual,
+            |a| {
+                let (from, to) = (points[a], points[a] + motion[a]);
+                let (lo, hi) = (from.min(to), from.max(to));
+                // Padded by the half extents and half the usual motion: two fast bodies
+                // whose paths come within their extents and the usual motion overlap.
+                let r = half[a] + Vector2D::new(0.5 * usual, 0.5 * usual);
+                (lo.x - r.x, hi.x + r.x, lo.y - r.y, hi.y + r.y, a as u32)
+            },
+        );
         let fast = self.swept.len();
         let start = out.len();
         // Each run searches until it holds what its bodies may (a far denser crowd than
@@ -237,26 +240,38 @@ impl Grid {
                 )
             })
             .collect();
-        let grid = &*self;
-        parallel::for_each(
-            &mut runs,
-            || (),
-            |(), (bodies, found, complete)| {
-                let most = run_bound(bodies.len()).min(room);
-                for &(.., a) in &grid.swept[bodies.clone()] {
-                    let a = a as usize;
-                    *complete = grid.along_path(points[a], motion[a], |b| {
-                        grid.near(a, b) || {
-                            found.extend(pair(a.min(b) as u32, a.max(b) as u32));
-                            found.len() < most
-                        }
-                    });
-                    if !*complete {
-                        return;
-                    }
-                }
-            },
-        );
+        // The fast bodies' paths against each other (below), side by side with the runs.
+        let mut crossing = Vec::new();
+        let mut by_left = std::mem::take(&mut self.by_left);
+        {
+            let grid = &*self;
+            let pair = &pair;
+            parallel::join(
+                || {
+                    parallel::for_each(
+                        &mut runs,
+                        || (),
+                        |(), (bodies, found, complete)| {
+                            let most = run_bound(bodies.len()).min(room);
+                            for &(.., a) in &grid.swept[bodies.clone()] {
+                                let a = a as usize;
+                                *complete = grid.along_path(points[a], motion[a], |b| {
+                                    grid.near(a, b) || {
+                                        found.extend(pair(a.min(b) as u32, a.max(b) as u32));
+                                        found.len() < most
+                                    }
+                                });
+                                if !*complete {
+                                    return;
+                                }
+                            }
+                        },
+                    );
+                },
+                || grid.paths_crossing(&mut by_left, pair, room, &mut crossing),
+            );
+        }
+        self.by_left = by_left;
         let full = |out: &Vec<T>| out.len() >= start + room;
         let mut resume = None;
         for (bodies, found, complete) in runs {
@@ -284,17 +299,33 @@ impl Grid {
                 }
             }
         }
-        self.swept
-            .sort_unstable_by(|x, y| x.0.total_cmp(&y.0).then(x.4.cmp(&y.4)));
-        for (i, &(_, right, top, bottom, a)) in self.swept.iter().enumerate() {
-            for &(left_b, _, top_b, bottom_b, b) in &self.swept[i + 1..] {
+        let left = (start + room).saturating_sub(out.len());
+        out.extend(crossing.into_iter().take(left));
+    }
+
+    /// Puts what `pair(a, b)` makes of every two fast bodies whose swept boxes overlap
+    /// (and are not in neighbouring cells) in `out`, in the order of a sweep along x,
+    /// the first `room` of them; `by_left` is scratch for the boxes sorted by their
+    /// left edge.
+    fn paths_crossing<T>(
+        &self,
+        by_left: &mut Vec<(f32, f32, f32, f32, u32)>,
+        pair: impl Fn(u32, u32) -> Option<T>,
+        room: usize,
+        out: &mut Vec<T>,
+    ) {
+        by_left.clear();
+        by_left.extend_from_slice(&self.swept);
+        by_left.sort_unstable_by(|x, y| x.0.total_cmp(&y.0).then(x.4.cmp(&y.4)));
+        for (i, &(_, right, top, bottom, a)) in by_left.iter().enumerate() {
+            for &(left_b, _, top_b, bottom_b, b) in &by_left[i + 1..] {
                 if left_b > right {
                     break;
                 }
                 let (a, b) = (a as usize, b as usize);
                 if top_b <= bottom && top <= bottom_b && !self.near(a, b) {
                     out.extend(pair(a.min(b) as u32, a.max(b) as u32));
-                    if out.len() >= start + room {
+                    if out.len() >= room {
                         return;
                     }
                 }

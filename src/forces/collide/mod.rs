@@ -88,6 +88,27 @@ fn in_pairs<'a>(
         .map(|(s, &l)| (s, l as usize))
 }
 
+/// The shares of a change of a pair's relative speed its two bodies take, from their
+/// inverse masses `wa` and `wb` (none where neither gives way).
+fn shares(wa: f32, wb: f32) -> (f32, f32) {
+    let total = wa + wb;
+    if total > 0.0 {
+        (wa / total, wb / total)
+    } else {
+        (0.0, 0.0)
+    }
+}
+
+/// Marks in `read` which of `n` bodies (local indices) are in any of `pairs`.
+fn mark_in_pairs(read: &mut Vec<bool>, n: usize, pairs: &[Pair]) {
+    read.clear();
+    read.resize(n, false);
+    for pair in pairs {
+        read[pair.a as usize] = true;
+        read[pair.b as usize] = true;
+    }
+}
+
 /// The soft-constraint coefficients of one substep (Box2D v3's `b2Softness`).
 #[derive(Clone, Copy, Debug)]
 struct Softness {
@@ -175,15 +196,8 @@ pub(crate) struct Collide {
     warm: Vec<u32>,
     /// By local index, a sleeping body's inverse mass once it wakes (0 for the rest).
     wake_inverse_mass: Vec<f32>,
-    /// Where the blocks of the grid's order that the passes solve side by side start
-    /// (`passes.rs`), and the end of the last, as local indices.
-    blocks: Vec<u32>,
-    /// The pairs from one block into the next, by boundary: each boundary's in order,
-    /// as indices from its first block's first pair, starting at `across_ends[j]`.
-    across: Vec<u32>,
-    across_ends: Vec<u32>,
-    /// The pairs reaching past the next block, by index, in order.
-    far: Vec<u32>,
+    /// The blocks the passes solve side by side (`passes.rs`).
+    cut: passes::Cut,
 }
 
 impl Collide {
@@ -208,10 +222,32 @@ impl Collide {
             self.softness = None;
             return false;
         }
-        self.share();
         self.read_wake_masses(world);
-        self.cut_blocks();
-        self.warm_start(world.version());
+        let warm = self.find_warm_starts(world.version());
+        // The cut into blocks and the bodies in pairs (for `relax`) beside the warm start.
+        let Self {
+            cut,
+            order,
+            rows,
+            pairs,
+            read,
+            warm: found,
+            last,
+            impulses,
+            velocity,
+            ..
+        } = self;
+        crate::parallel::beside(
+            || {
+                cut.cut_into(passes::blocks_for(pairs.len()), order.len(), rows, pairs);
+                mark_in_pairs(read, order.len(), pairs);
+            },
+            || {
+                if warm {
+                    pairs::warm_start(found, last, pairs, impulses, velocity);
+                }
+            },
+        );
         let softness = Softness::new(contacts, dt);
         self.softness = Some(softness);
         for _ in 0..PASSES {
@@ -275,11 +311,10 @@ impl Collide {
         // Only the bodies in pairs: their new velocities and positions, read in slot
         // order (rapier's bodies are in that order; at 100,000 bodies they outgrow the
         // cache, and the grid's order would miss it on every body).
-        self.read.clear();
-        self.read.resize(n, false);
-        for pair in &self.pairs {
-            self.read[pair.a as usize] = true;
-            self.read[pair.b as usize] = true;
+        if self.read.len() != n {
+            // Marked by `resolve` (beside the warm start); a search for pairs since
+            // (`part_overlaps`) clears it.
+            mark_in_pairs(&mut self.read, n, &self.pairs);
         }
         self.read_bodies_in_pairs(world.slots_view(), slots);
         // The world's bodies do not change between `resolve` and here.
@@ -313,20 +348,40 @@ impl Collide {
                 break;
             }
         }
-        for (s, l) in in_pairs(&self.local[..slots.min(self.local.len())], &self.read) {
-            let change = self.velocity[l] - self.before[l];
-            if change == Vector2D::zero() {
-                continue;
-            }
-            let body = world.body_at_mut(s);
-            if body.is_dynamic() {
-                let v = body.linvel() + Vector::new(change.x, change.y);
-                if v.is_finite() {
-                    body.set_linvel(v, false);
+        // The velocity changes put on rapier's bodies (on this thread: they touch the
+        // world) beside the impulses kept for the next substep.
+        let version = world.version();
+        let Self {
+            local,
+            read,
+            velocity,
+            before,
+            order,
+            pairs,
+            impulses,
+            last,
+            last_version,
+            ..
+        } = self;
+        crate::parallel::beside(
+            || pairs::keep_impulses(order, pairs, impulses, last),
+            || {
+                for (s, l) in in_pairs(&local[..slots.min(local.len())], read) {
+                    let change = velocity[l] - before[l];
+                    if change == Vector2D::zero() {
+                        continue;
+                    }
+                    let body = world.body_at_mut(s);
+                    if body.is_dynamic() {
+                        let v = body.linvel() + Vector::new(change.x, change.y);
+                        if v.is_finite() {
+                            body.set_linvel(v, false);
+                        }
+                    }
                 }
-            }
-        }
-        self.keep_impulses(world.version());
+            },
+        );
+        *last_version = Some(version);
     }
 
     /// The new positions and velocities of the bodies in pairs: read by slot in runs
@@ -440,19 +495,14 @@ impl Collide {
             }));
     }
 
-    /// Each pair's shares of a change of its relative speed, from the inverse masses,
-    /// in runs of pairs side by side under `parallel`.
+    /// Each pair's shares of a change of its relative speed, from the inverse masses
+    /// (after a body woke), in runs of pairs side by side under `parallel`.
     fn share(&mut self) {
         let inverse_mass = &self.inverse_mass;
         crate::parallel::for_each_run(&mut self.pairs, SEPARATION_RUN, |_, pairs| {
             for pair in pairs {
-                let (wa, wb) = (inverse_mass[pair.a as usize], inverse_mass[pair.b as usize]);
-                let total = wa + wb;
-                (pair.share_a, pair.share_b) = if total > 0.0 {
-                    (wa / total, wb / total)
-                } else {
-                    (0.0, 0.0)
-                };
+                let (a, b) = (pair.a as usize, pair.b as usize);
+                (pair.share_a, pair.share_b) = shares(inverse_mass[a], inverse_mass[b]);
             }
         });
     }

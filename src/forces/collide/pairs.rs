@@ -14,7 +14,7 @@ use euclid::default::{Point2D, Vector2D};
 use super::grid::Grid;
 use super::passes::push;
 use super::shapes::{box_contact, Side};
-use super::{coincident_normal, Collide, SLEEPING_OVERLAP};
+use super::{coincident_normal, shares, Collide, SLEEPING_OVERLAP};
 use crate::parallel;
 use crate::world::RapierSceneWorld;
 
@@ -243,13 +243,14 @@ impl Candidates<'_> {
             };
             (normal, distance - reach)
         });
+        let (share_a, share_b) = shares(inverse_mass[ia], inverse_mass[ib]);
         Some(Pair {
             a,
             b,
             normal,
             separation,
-            share_a: 0.0,
-            share_b: 0.0,
+            share_a,
+            share_b,
         })
     }
 }
@@ -320,29 +321,44 @@ impl Collide {
         // crowd far denser than disks can be: thousands of nodes added at one point,
         // contacts from a hot scatter's first frame) is searched again from its start,
         // in order, for what the budget keeps; the rest wait for a later substep.
-        pairs.clear();
-        extra.clear();
-        let mut resume = None;
+        let (mut near, mut whole, mut resume) = (0, 0, None);
         for (r, found) in runs.iter().enumerate() {
-            if pairs.len() >= budget {
+            if near >= budget {
                 break;
             }
             if !found.complete {
                 resume = Some(r * RUN);
                 break;
             }
-            pairs.extend_from_slice(&found.pairs);
+            (near, whole) = (near + found.pairs.len(), r + 1);
         }
-        pairs.truncate(budget);
+        let near = near.min(budget);
+        let concat = |pairs: &mut Vec<Pair>| {
+            pairs.clear();
+            for found in &runs[..whole] {
+                pairs.extend_from_slice(&found.pairs);
+            }
+            pairs.truncate(budget);
+        };
+        extra.clear();
+        let fast = |grid: &mut Grid, room: usize, extra: &mut Vec<Pair>| {
+            grid.fast_pairs(points, half, motion, |a, b| test.pair(a, b), room, extra);
+        };
         if let Some(start) = resume {
+            concat(pairs);
             grid.near_pairs(start..bodies, |a, b| {
                 pairs.extend(test.pair(a, b));
                 pairs.len() < budget
             });
-        }
-        if pairs.len() < budget {
-            let room = budget - pairs.len();
-            grid.fast_pairs(points, half, motion, |a, b| test.pair(a, b), room, extra);
+            if pairs.len() < budget {
+                fast(grid, budget - pairs.len(), extra);
+            }
+        } else if near < budget {
+            // The room the runs leave is known: the fast bodies' search (on another
+            // thread, if one is free) beside the copy of the runs' pairs.
+            parallel::beside(|| fast(grid, budget - near, extra), || concat(pairs));
+        } else {
+            concat(pairs);
         }
         if !self.extra.is_empty() {
             self.merge_extra();
@@ -383,20 +399,18 @@ impl Collide {
         self.merged = near;
     }
 
-    /// Starts each pair from the impulse it ended the last substep with, found by its
-    /// two slots: the pairs looked up in fixed runs (side by side under `parallel`),
-    /// then the impulses added in the order they were kept.
-    pub(super) fn warm_start(&mut self, version: u64) {
+    /// Finds the pair each impulse the last substep kept belongs to (`warm`), in fixed
+    /// runs side by side under `parallel`; returns whether the impulses are for this
+    /// world version (else nothing warm-starts). [`warm_start`] adds them.
+    pub(super) fn find_warm_starts(&mut self, version: u64) -> bool {
         if self.last_version != Some(version) {
-            return;
+            return false;
         }
         let Self {
             last,
             local,
             rows,
             pairs,
-            impulses,
-            velocity,
             warm,
             ..
         } = self;
@@ -424,31 +438,47 @@ impl Collide {
                 }
             }
         });
-        for (&k, &(_, _, impulse)) in warm.iter().zip(last.iter()) {
-            if k != NONE {
-                let (k, pair) = (k as usize, &pairs[k as usize]);
-                let ends = (pair.a as usize, pair.b as usize);
-                push(pair, &mut impulses[k], velocity, ends, impulse);
-            }
+        true
+    }
+}
+
+/// Starts each pair from the impulse it ended the last substep with (`last`, each
+/// found at pair `warm[i]`, or `NONE`), added in the order they were kept.
+pub(super) fn warm_start(
+    warm: &[u32],
+    last: &[(u32, u32, f32)],
+    pairs: &[Pair],
+    impulses: &mut [f32],
+    velocity: &mut [Vector2D<f32>],
+) {
+    for (&k, &(_, _, impulse)) in warm.iter().zip(last) {
+        if k != NONE {
+            let (k, pair) = (k as usize, &pairs[k as usize]);
+            let ends = (pair.a as usize, pair.b as usize);
+            push(pair, &mut impulses[k], velocity, ends, impulse);
         }
     }
+}
 
-    /// Keeps the impulses of the pairs that pushed, by their slots, for the next
-    /// substep: found in runs of pairs side by side under `parallel`, kept in order.
-    pub(super) fn keep_impulses(&mut self, version: u64) {
-        let (order, pairs, impulses) = (&self.order, &self.pairs, &self.impulses);
-        parallel::collect_runs(
-            pairs.len(),
-            RUN,
-            &mut self.last,
-            |k| impulses[k] > 0.0,
-            |k| {
-                let p = pairs[k];
-                (order[p.a as usize], order[p.b as usize], impulses[k])
-            },
-        );
-        self.last_version = Some(version);
-    }
+/// The impulses of the `pairs` that pushed, as `(slot a, slot b, impulse)` (`order`: the
+/// slot of each local index), kept in `last` for the next substep: found in runs of
+/// pairs side by side under `parallel`, kept in order.
+pub(super) fn keep_impulses(
+    order: &[u32],
+    pairs: &[Pair],
+    impulses: &[f32],
+    last: &mut Vec<(u32, u32, f32)>,
+) {
+    parallel::collect_runs(
+        pairs.len(),
+        RUN,
+        last,
+        |k| impulses[k] > 0.0,
+        |k| {
+            let p = pairs[k];
+            (order[p.a as usize], order[p.b as usize], impulses[k])
+        },
+    );
 }
 
 #[cfg(test)]

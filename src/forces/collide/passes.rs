@@ -6,8 +6,9 @@
 //! only its own bodies' velocities, so the blocks are solved side by side under
 //! `parallel`. The few pairs from one block into the next follow, by the boundary they
 //! cross: those of boundaries 0, 2, 4, … side by side (each touches only its two
-//! blocks, and no two of these share one), then those of 1, 3, 5, …; the rare pair
-//! reaching past the next block comes last, in order. That is one Gauss–Seidel order,
+//! blocks, and no two of these share one; a lane takes both blocks' own pairs and then
+//! these, so a pass holds two parts side by side, not three), then those of 1, 3, 5,
+//! …; the rare pair reaching past the next block comes last, in order. That is one Gauss–Seidel order,
 //! whatever the number of threads: the blocks are cut by the pairs' count, never by the
 //! pool's size, so a pass gives the same bits on any number of threads. (Where a block
 //! spans more than two rows of cells, the pairs of two boundaries share no body, and the
@@ -118,6 +119,36 @@ impl Lane<'_> {
         *largest = most;
     }
 
+    /// The lane cut in two at its `bodies`-th body and `pairs`-th pair: the first part
+    /// takes the bodies and pairs before, the second the rest (each waking into a list
+    /// of its own).
+    fn split(&mut self, bodies: usize, pairs: usize) -> (Lane<'_>, Lane<'_>) {
+        let (p1, p2) = self.pairs.split_at_mut(pairs);
+        let (i1, i2) = self.impulses.split_at_mut(pairs);
+        let (v1, v2) = self.velocity.split_at_mut(bodies);
+        let (s1, s2) = self.wake.sleeping.split_at_mut(bodies);
+        let (m1, m2) = self.wake.inverse_mass.split_at_mut(bodies);
+        let (w1, w2) = self.wake.wake_inverse_mass.split_at(bodies);
+        let lane =
+            |first, pairs, impulses, velocity, sleeping, inverse_mass, wake_inverse_mass| Lane {
+                first,
+                pairs,
+                impulses,
+                velocity,
+                wake: Wake {
+                    sleeping,
+                    inverse_mass,
+                    wake_inverse_mass,
+                    woken: Vec::new(),
+                },
+                largest: 0.0,
+            };
+        (
+            lane(self.first, p1, i1, v1, s1, m1, w1),
+            lane(self.first + bodies, p2, i2, v2, s2, m2, w2),
+        )
+    }
+
     /// The pairs `listed`, in order.
     fn listed<const PUSH: bool>(&mut self, listed: &[u32], rule: PassRule) {
         let Self {
@@ -201,30 +232,44 @@ impl Wake<'_> {
     }
 }
 
-impl Collide {
-    /// Cuts the grid's order into the blocks the passes solve side by side, and lists
-    /// the pairs across two blocks. One block without `parallel`, or for too few pairs.
-    pub(super) fn cut_blocks(&mut self) {
-        let wanted = if cfg!(feature = "parallel") {
-            (self.pairs.len() / PAIRS_PER_BLOCK).min(MOST_BLOCKS)
-        } else {
-            1
-        };
-        // The largest power of two not above what is wanted, and at least one.
-        self.cut_into(1usize << wanted.max(1).ilog2());
-    }
+/// How many blocks a substep's `pairs` are cut into: one without `parallel` or for too
+/// few pairs, else the largest power of two not above one a [`PAIRS_PER_BLOCK`].
+pub(super) fn blocks_for(pairs: usize) -> usize {
+    let wanted = if cfg!(feature = "parallel") {
+        (pairs / PAIRS_PER_BLOCK).min(MOST_BLOCKS)
+    } else {
+        1
+    };
+    1usize << wanted.max(1).ilog2()
+}
 
-    /// Cuts the grid's order into `blocks` blocks of about as many pairs each (fewer
-    /// where a body holds more than a block's share), and sorts the pairs between two
-    /// blocks by the boundary they cross.
-    fn cut_into(&mut self, blocks: usize) {
-        let (bodies, count) = (self.order.len(), self.pairs.len());
+/// The blocks of the grid's order that the passes solve side by side, and the pairs
+/// between them.
+#[derive(Debug, Default)]
+pub(super) struct Cut {
+    /// Where each block starts, and the end of the last, as local indices.
+    pub(super) blocks: Vec<u32>,
+    /// The pairs from one block into the next, by boundary: each boundary's in order,
+    /// as indices from its first block's first pair, starting at `across_ends[j]`.
+    across: Vec<u32>,
+    across_ends: Vec<u32>,
+    /// The pairs reaching past the next block, by index, in order.
+    far: Vec<u32>,
+}
+
+impl Cut {
+    /// Cuts the grid's order of `bodies` bodies into `blocks` blocks of about as many
+    /// of the `pairs` each (fewer where a body holds more than a block's share; `rows`:
+    /// where each body's pairs start), and sorts the pairs between two blocks by the
+    /// boundary they cross.
+    pub(super) fn cut_into(&mut self, blocks: usize, bodies: usize, rows: &[u32], pairs: &[Pair]) {
+        let count = pairs.len();
         self.blocks.clear();
         self.blocks.push(0);
         for j in 1..blocks {
             // The first body whose pairs start at or after this block's share of them.
             let target = (count * j / blocks) as u32;
-            let at = self.rows[..bodies].partition_point(|&r| r < target) as u32;
+            let at = rows[..bodies].partition_point(|&r| r < target) as u32;
             let last = *self.blocks.last().unwrap_or(&0);
             self.blocks.push(at.max(last));
         }
@@ -238,9 +283,14 @@ impl Collide {
             for j in 0..blocks - 1 {
                 self.across_ends.push(self.across.len() as u32);
                 let (end, next) = (self.blocks[j + 1], self.blocks[j + 2]);
-                let first = self.rows[self.blocks[j] as usize] as usize;
-                for k in first..self.rows[end as usize] as usize {
-                    match self.pairs[k].b {
+                let first = rows[self.blocks[j] as usize] as usize;
+                for (k, pair) in pairs
+                    .iter()
+                    .enumerate()
+                    .take(rows[end as usize] as usize)
+                    .skip(first)
+                {
+                    match pair.b {
                         b if b < end => {}
                         b if b < next => self.across.push((k - first) as u32),
                         _ => self.far.push(k as u32),
@@ -249,6 +299,14 @@ impl Collide {
             }
             self.across_ends.push(self.across.len() as u32);
         }
+    }
+}
+
+impl Collide {
+    /// Cuts the grid's order into `blocks` blocks ([`Cut::cut_into`]).
+    #[cfg(test)]
+    pub(super) fn cut_into(&mut self, blocks: usize) {
+        (self.cut).cut_into(blocks, self.order.len(), &self.rows, &self.pairs);
     }
 
     /// One pass over the pairs: with `softness`, the push that parts an overlap;
@@ -287,17 +345,22 @@ impl Collide {
     }
 
     /// [`pass`](Self::pass), with the push (`PUSH`) or without, so the loop carries no
-    /// choice it need not make: the blocks' own pairs side by side; then the pairs across
-    /// a boundary, those of every other boundary side by side (each set of two
-    /// neighbouring blocks is its own), then those of the boundaries between; then the
-    /// few reaching further, in order. Returns the largest change and the bodies woken,
-    /// in order.
+    /// choice it need not make. Blocks `2i` and `2i + 1` make one lane, side by side with
+    /// the others: each block's own pairs, then the pairs from the first into the
+    /// second. Then the pairs across the boundaries between lanes, side by side; then
+    /// the few reaching further, in order. Only pairs of disjoint bodies change places
+    /// against "every block's own pairs, then the pairs across by boundary" (the
+    /// module's order), so the bits are that order's. Returns the largest change and
+    /// the bodies woken, in that order.
     fn pass_with<const PUSH: bool>(&mut self, rule: PassRule) -> (f32, Vec<u32>) {
         let Self {
-            blocks,
-            across,
-            across_ends,
-            far,
+            cut:
+                Cut {
+                    blocks,
+                    across,
+                    across_ends,
+                    far,
+                },
             rows,
             pairs,
             impulses,
@@ -317,30 +380,62 @@ impl Collide {
             wake_inverse_mass,
         };
         let (mut largest, mut woken) = (0.0_f32, Vec::new());
-        let mut gather = |lanes: Vec<Lane>| {
-            for lane in lanes {
-                largest = largest.max(lane.largest);
-                woken.extend(lane.wake.woken);
-            }
-        };
-        let own: Vec<_> = blocks
-            .windows(2)
-            .map(|w| w[0] as usize..w[1] as usize)
-            .collect();
-        let mut lanes = solving.lanes(&own);
-        if let [lane] = &mut lanes[..] {
-            lane.own_pairs::<PUSH>(rule, true);
+        let count = blocks.len() - 1;
+        if count == 1 {
+            let every = blocks[0] as usize..blocks[1] as usize;
+            let mut lanes = solving.lanes(std::slice::from_ref(&every));
+            lanes[0].own_pairs::<PUSH>(rule, true);
+            gather(lanes, &mut largest, &mut woken);
         } else {
+            // Two blocks a lane: each block's own pairs, then those from the first into
+            // the second (no other lane touches either block).
+            let two: Vec<_> = (0..count)
+                .step_by(2)
+                .map(|j| blocks[j] as usize..blocks[(j + 2).min(count)] as usize)
+                .collect();
+            let mut jobs: Vec<_> = solving
+                .lanes(&two)
+                .into_iter()
+                .zip((0..count).step_by(2))
+                .map(|(lane, j)| (lane, j, [Vec::new(), Vec::new(), Vec::new()]))
+                .collect();
             parallel::for_each(
-                &mut lanes,
+                &mut jobs,
                 || (),
-                |(), lane| lane.own_pairs::<PUSH>(rule, false),
+                |(), (lane, j, woken)| {
+                    let j = *j;
+                    let bodies = (blocks[j + 1] - blocks[j]) as usize;
+                    let pairs = (rows[blocks[j + 1] as usize] - rows[blocks[j] as usize]) as usize;
+                    let (mut first, mut second) = lane.split(bodies, pairs);
+                    first.own_pairs::<PUSH>(rule, false);
+                    second.own_pairs::<PUSH>(rule, false);
+                    let largest = first.largest.max(second.largest);
+                    woken[0] = first.wake.woken;
+                    woken[1] = second.wake.woken;
+                    lane.largest = lane.largest.max(largest);
+                    if j + 1 < count {
+                        lane.listed::<PUSH>(
+                            &across[across_ends[j] as usize..across_ends[j + 1] as usize],
+                            rule,
+                        );
+                        woken[2] = std::mem::take(&mut lane.wake.woken);
+                    }
+                },
             );
+            // Woken in the order of one block after another, then of the pairs across.
+            let mut across_woken = Vec::new();
+            for (lane, _, [a, b, c]) in jobs {
+                largest = largest.max(lane.largest);
+                woken.extend(a);
+                woken.extend(b);
+                across_woken.extend(c);
+            }
+            woken.extend(across_woken);
         }
-        gather(lanes);
+        // The pairs across the boundaries between those lanes' blocks, side by side.
         let boundaries = blocks.len().saturating_sub(2);
-        for phase in 0..2 {
-            let crossed: Vec<usize> = (phase..boundaries).step_by(2).collect();
+        {
+            let crossed: Vec<usize> = (1..boundaries).step_by(2).collect();
             let two: Vec<_> = crossed
                 .iter()
                 .map(|&j| blocks[j] as usize..blocks[j + 2] as usize)
@@ -354,15 +449,28 @@ impl Collide {
                     lane.listed::<PUSH>(listed, rule);
                 },
             );
-            gather(lanes.into_iter().map(|(lane, _)| lane).collect());
+            gather(
+                lanes.into_iter().map(|(lane, _)| lane),
+                &mut largest,
+                &mut woken,
+            );
         }
         if !far.is_empty() {
             let every = 0..solving.velocity.len();
             let mut lanes = solving.lanes(std::slice::from_ref(&every));
             lanes[0].listed::<PUSH>(far, rule);
-            gather(lanes);
+            gather(lanes, &mut largest, &mut woken);
         }
         (largest, woken)
+    }
+}
+
+/// Adds what `lanes` found to the pass's `largest` change and the bodies it `woke`, in
+/// the lanes' order.
+fn gather<'a>(lanes: impl IntoIterator<Item = Lane<'a>>, largest: &mut f32, woke: &mut Vec<u32>) {
+    for lane in lanes {
+        *largest = largest.max(lane.largest);
+        woke.extend(lane.wake.woken);
     }
 }
 

@@ -61,7 +61,6 @@ impl Collide {
         self.region.clear();
         self.take_in_grid_order(&start);
         self.find_pairs(MARGIN);
-        self.share();
         let from = self.points.clone();
         for _ in 0..PASSES {
             if self.project_pass() < PARTED {
@@ -80,6 +79,7 @@ impl Collide {
         // What the soft contacts kept belongs to positions that are gone.
         self.last.clear();
         self.pairs.clear();
+        self.read.clear();
         farthest
     }
 

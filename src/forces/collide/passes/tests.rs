@@ -89,7 +89,7 @@ fn blocks_solve_every_pair_in_one_gauss_seidel_order() {
         blocked.pairs.len()
     );
     blocked.cut_into(4);
-    let blocks = blocked.blocks.clone();
+    let blocks = blocked.cut.blocks.clone();
     assert_eq!(blocks.len(), 5, "four blocks: {blocks:?}");
     let block_of = |l: u32| blocks.windows(2).position(|w| w[0] <= l && l < w[1]);
     // The pairs across, by the boundary they cross (`None`: past the next block).

@@ -202,7 +202,7 @@ impl<N: Clone + Eq + Hash> Default for Forces<N> {
 impl<N> std::fmt::Debug for Forces<N> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Forces")
-            .field("forces", &self.list.len())
+            .field("forces", &(self.list.len() + 2))
             .finish_non_exhaustive()
     }
 }
@@ -259,6 +259,8 @@ impl<N: Clone + Eq + Hash> Forces<N> {
     pub(crate) fn any_active(&self, config: &RapierLayoutConfig) -> bool {
         config.separates_disks()
             || config.stress.is_some()
+            || config.repulsion.is_some()
+            || BodyForce::<N>::is_active(&self.springs, config, &self.targets)
             || self
                 .list
                 .iter()

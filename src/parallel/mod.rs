@@ -51,9 +51,10 @@ pub(crate) fn join<A: Send, B: Send>(
 
 /// Runs `job` beside `here` and returns what `here` returns once both are done:
 /// under `parallel`, `job` is handed to rayon's pool for another thread to take while
-/// `here` runs on the calling thread (so `here` may touch what must stay on it), and
-/// the calling thread runs `job` itself if no thread took it; without the feature,
-/// `job` then `here`. The two must not share what they write.
+/// `here` runs on the calling thread (so `here` may touch what must stay on it); on a
+/// thread of the pool, the calling thread runs `job` itself if no other took it, and
+/// from outside the pool `job` waits in the pool's queue. Without the feature, `job`
+/// then `here`. The two must not share what they write.
 pub(crate) fn beside<R>(job: impl FnOnce() + Send, here: impl FnOnce() -> R) -> R {
     #[cfg(feature = "parallel")]
     return rayon::in_place_scope(|scope| {

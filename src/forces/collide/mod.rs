@@ -178,7 +178,8 @@ pub(crate) struct Collide {
     before: Vec<Vector2D<f32>>,
     /// Each body's displacement over the substep as the pairs are found.
     motion: Vec<Vector2D<f32>>,
-    /// After the step: which bodies in pairs were read anew.
+    /// Which bodies (local indices) are in a pair: marked by `resolve`, and read anew
+    /// after the step by `relax`.
     read: Vec<bool>,
     /// By slot, the velocity change of the last [`resolve`](Self::resolve).
     changes: Vec<Vector2D<f32>>,

@@ -353,34 +353,25 @@ impl Collide {
     /// module's order), so the bits are that order's. Returns the largest change and
     /// the bodies woken, in that order.
     fn pass_with<const PUSH: bool>(&mut self, rule: PassRule) -> (f32, Vec<u32>) {
-        let Self {
-            cut:
-                Cut {
-                    blocks,
-                    across,
-                    across_ends,
-                    far,
-                },
-            rows,
-            pairs,
-            impulses,
-            velocity,
-            sleeping,
-            inverse_mass,
-            wake_inverse_mass,
-            ..
-        } = self;
+        let Cut {
+            blocks,
+            across,
+            across_ends,
+            far,
+        } = &self.cut;
+        let rows = &self.rows;
         let mut solving = Solving {
             rows,
-            pairs,
-            impulses,
-            velocity,
-            sleeping,
-            inverse_mass,
-            wake_inverse_mass,
+            pairs: &mut self.pairs,
+            impulses: &mut self.impulses,
+            velocity: &mut self.velocity,
+            sleeping: &mut self.sleeping,
+            inverse_mass: &mut self.inverse_mass,
+            wake_inverse_mass: &self.wake_inverse_mass,
         };
         let (mut largest, mut woken) = (0.0_f32, Vec::new());
-        let count = blocks.len() - 1;
+        // No block before a cut (no pairs): nothing to solve.
+        let count = blocks.len().saturating_sub(1);
         if count == 1 {
             let every = blocks[0] as usize..blocks[1] as usize;
             let mut lanes = solving.lanes(std::slice::from_ref(&every));

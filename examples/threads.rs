@@ -7,6 +7,11 @@
 //! contacts, rapier's step, and the rest of the call: matching, sync in and out,
 //! deltas).
 //!
+//! Beside them, the machine's own ceiling: the same work with nothing shared and
+//! nothing serial (an arithmetic chain, and a sum streamed through memory, in 64
+//! pieces) on the same pools, timed in each run, so a ratio reads against what 2
+//! threads of this machine give at best.
+//!
 //! `cargo run --release --features parallel --example threads -- [scene] [preset] [frames] [runs]`
 //! (defaults `n10000_e25000 force_directed 240 3`; `preset` is `force_directed` or
 //! `stress`; a generated name such as `random_n100000_e250000` works too).
@@ -110,6 +115,50 @@ fn time(
     })
 }
 
+/// Pieces of work with nothing shared: each an arithmetic chain (a logistic map with a
+/// square root, as latency-bound as the layout's sums) or a sum streamed through
+/// `buffer` (as bandwidth-bound as its passes over bodies).
+fn ceiling_work(piece: usize, streamed: bool, buffer: &[f32]) -> f64 {
+    if !streamed {
+        let mut x = 0.5 + piece as f64 * 1e-6;
+        let mut sum = 0.0;
+        for i in 0..400_000_u32 {
+            x = (x * 3.7 * (1.0 - x)).abs();
+            sum += x.sqrt() * f64::from(i % 7);
+        }
+        sum
+    } else {
+        let mut sum = 0.0_f32;
+        for (i, &v) in buffer.iter().enumerate() {
+            sum += v * ((i + piece) & 7) as f32;
+        }
+        f64::from(sum)
+    }
+}
+
+/// The ceiling's times (ms: the arithmetic, then the streamed sums) on a pool of
+/// `threads`, and its result (the same on any).
+fn ceiling(threads: usize, buffer: &[f32]) -> ([f64; 2], f64) {
+    use rayon::prelude::*;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("a rayon pool");
+    pool.install(|| {
+        let (mut times, mut sum) = ([0.0; 2], 0.0);
+        for (streamed, time) in [false, true].into_iter().zip(&mut times) {
+            let started = Instant::now();
+            let pieces: Vec<f64> = (0..64_usize)
+                .into_par_iter()
+                .map(|piece| ceiling_work(piece, streamed, buffer))
+                .collect();
+            *time = started.elapsed().as_secs_f64() * 1000.0;
+            sum += pieces.iter().sum::<f64>();
+        }
+        (times, sum)
+    })
+}
+
 fn main() {
     let mut args = std::env::args().skip(1);
     let name = args.next().unwrap_or_else(|| "n10000_e25000".into());
@@ -124,7 +173,19 @@ fn main() {
     // sleep between the parallel parts.
     let pools = [(1, true), (2, true), (2, false)];
     let (mut best, mut bits) = ([Run::INFINITE; 3], [Vec::new(), Vec::new(), Vec::new()]);
+    let buffer: Vec<f32> = (0..1_000_000).map(|i| (i % 1_000) as f32).collect();
+    let mut ceiling_best = [[f64::INFINITY; 2]; 2];
     for run in 0..runs {
+        let (one, sum_one) = ceiling(1, &buffer);
+        let (two, sum_two) = ceiling(2, &buffer);
+        assert_eq!(
+            sum_one.to_bits(),
+            sum_two.to_bits(),
+            "the ceiling's pieces are fixed"
+        );
+        for (best, now) in ceiling_best.iter_mut().zip([one, two]) {
+            *best = [best[0].min(now[0]), best[1].min(now[1])];
+        }
         for (k, pool) in pools.into_iter().enumerate() {
             let (measured, positions) = time(&name, &config, pool, frames);
             let asleep = if pool.1 { "" } else { ", asleep between parts" };
@@ -153,15 +214,26 @@ fn main() {
             asleep / one
         );
     }
+    let ceiling_ratio = |kind: usize| ceiling_best[1][kind] / ceiling_best[0][kind];
+    for (kind, what) in ["arithmetic", "streamed"].into_iter().enumerate() {
+        println!(
+            "ceiling   {:>8.2}  {:>9.2}  {:>5.2}  ({what} work with nothing shared, ms)",
+            ceiling_best[0][kind],
+            ceiling_best[1][kind],
+            ceiling_ratio(kind)
+        );
+    }
     let own = |r: Run| r.forces + r.contacts;
     println!(
-        "threads: {name} {preset} best of {runs}: 1 thread {:.2} ms, 2 threads {:.2} ms, ratio {:.2}; own forces and contacts ratio {:.2}; asleep between parts {:.2} and {:.2} (same bits, digest {:016x})",
+        "threads: {name} {preset} best of {runs}: 1 thread {:.2} ms, 2 threads {:.2} ms, ratio {:.2}; own forces and contacts ratio {:.2}; asleep between parts {:.2} and {:.2}; the machine's ceiling {:.2} and {:.2} (same bits, digest {:016x})",
         best[0].frame,
         best[1].frame,
         best[1].frame / best[0].frame,
         own(best[1]) / own(best[0]),
         best[2].frame / best[0].frame,
         own(best[2]) / own(best[0]),
+        ceiling_ratio(0),
+        ceiling_ratio(1),
         digest(&bits[0])
     );
 }

@@ -151,7 +151,8 @@ pub(crate) trait BodyForce<N>: Send + Sync {
 /// The forces of a layout, with the buffers one substep sums them in.
 pub(crate) struct Forces<N> {
     /// The repulsion, which writes every body's force first, and the springs, which
-    /// write sums of their own: the two run side by side under `parallel`.
+    /// write sums of their own: the two run side by side under `parallel`, the stress
+    /// terms beside the springs too.
     many_body: many_body::ManyBodyForce,
     springs: springs::SpringForce,
     /// The forces that add to the repulsion's, in order.
@@ -516,8 +517,16 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             dt,
             targets: &self.targets,
         };
-        // The repulsion (on another thread, if one is free) beside the springs (on this
-        // one: they read the world), each into sums of its own.
+        // The stress terms read the world first; then the repulsion and the stress terms
+        // (on another thread, if one is free) beside the springs (on this one: they read
+        // the world), each into sums of its own.
+        let stress = &mut self.stress;
+        let stress_step = if BodyForce::<N>::is_active(stress, config, &self.targets) {
+            stress.hold_cold = hold_cold;
+            stress.prepare(&frame)
+        } else {
+            None
+        };
         let mut spring_sums = ForceSums {
             springs: std::mem::take(&mut self.sums.springs),
             resistance: std::mem::take(&mut self.sums.resistance),
@@ -530,6 +539,9 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             || {
                 if let Some(repulsion) = &config.repulsion {
                     many_body.apply(repulsion, heat, points, pushed, forces);
+                }
+                if let Some(step) = stress_step {
+                    stress.work_out(step, points, pushed);
                 }
             },
             || {
@@ -544,9 +556,10 @@ impl<N: Clone + Eq + Hash> Forces<N> {
                 force.apply(&frame, &mut self.sums);
             }
         }
-        if BodyForce::<N>::is_active(&self.stress, config, &self.targets) {
-            self.stress.hold_cold = hold_cold;
-            self.stress.apply(&frame, &mut self.sums);
+        // Last, as the stress terms always were: the sums' bits do not depend on where
+        // the terms were worked out.
+        if stress_step.is_some() {
+            self.stress.add_to(&mut self.sums);
         }
     }
 

@@ -50,7 +50,11 @@ pub(super) struct Grid {
     by_left: Vec<(f32, f32, f32, f32, u32)>,
     /// Scratch for the sort of the cells.
     scratch: Vec<(u64, u32)>,
+    /// After a sort by counting, where each row's bodies end in `cells` (from the row
+    /// `top_row`): the rows' index, which spares a search along a path a search of all
+    /// the cells for each row it crosses.
     counts: Vec<u32>,
+    top_row: Option<i64>,
 }
 
 /// Sorts `cells` (`(key, slot)`, in slot order) by key, then slot. Where the grid's
@@ -58,11 +62,14 @@ pub(super) struct Grid {
 /// scatter across the canvas), by two counting sorts, by column and then by row, each
 /// keeping the order it finds (so the slots stay ascending within a cell): linear in
 /// the bodies, where a comparison sort was a tenth of the contacts' time at 10,000
-/// bodies. Otherwise by a comparison sort. Both give the one order there is.
-fn sort_cells(cells: &mut Vec<(u64, u32)>, scratch: &mut Vec<(u64, u32)>, counts: &mut Vec<u32>) {
-    let Some(&(first, _)) = cells.first() else {
-        return;
-    };
+/// bodies; returns the top row then (and `counts` holds where each row's bodies end).
+/// Otherwise by a comparison sort. Both give the one order there is.
+fn sort_cells(
+    cells: &mut Vec<(u64, u32)>,
+    scratch: &mut Vec<(u64, u32)>,
+    counts: &mut Vec<u32>,
+) -> Option<i64> {
+    let &(first, _) = cells.first()?;
     let (row0, column0) = row_and_column(first);
     let ((mut top, mut bottom), (mut left, mut right)) = ((row0, row0), (column0, column0));
     for &(k, _) in cells.iter() {
@@ -73,12 +80,13 @@ fn sort_cells(cells: &mut Vec<(u64, u32)>, scratch: &mut Vec<(u64, u32)>, counts
     let (rows, columns) = ((bottom - top + 1) as u64, (right - left + 1) as u64);
     if rows + columns > 4 * cells.len() as u64 + 1_024 {
         parallel::sort_unstable(cells);
-        return;
+        return None;
     }
     let by_column = |k: u64| (row_and_column(k).1 - left) as usize;
     let by_row = |k: u64| (row_and_column(k).0 - top) as usize;
     counting_sort(cells, scratch, counts, columns as usize, by_column);
     counting_sort(scratch, cells, counts, rows as usize, by_row);
+    Some(top)
 }
 
 impl Grid {
@@ -131,7 +139,7 @@ impl Grid {
                 (key(index(p.x, cell.x), index(p.y, cell.y)), s as u32)
             },
         );
-        sort_cells(&mut self.cells, &mut self.scratch, &mut self.counts);
+        self.top_row = sort_cells(&mut self.cells, &mut self.scratch, &mut self.counts);
         self.cells.iter().map(|&(_, s)| s)
     }
 
@@ -343,6 +351,24 @@ impl Grid {
         (row_a - row_b).abs() <= 1 && (column_a - column_b).abs() <= 1
     }
 
+    /// Where row `y`'s bodies lie in `cells` (from the rows' index of a sort by
+    /// counting; all the cells otherwise, which hold them too).
+    fn row(&self, y: i64) -> std::ops::Range<usize> {
+        let Some(top) = self.top_row else {
+            return 0..self.cells.len();
+        };
+        let rows = self.counts.len().saturating_sub(1) as i64;
+        match y - top {
+            b if b < 0 => 0..0,
+            b if b >= rows => self.cells.len()..self.cells.len(),
+            b => {
+                let b = b as usize;
+                let start = if b == 0 { 0 } else { self.counts[b - 1] };
+                start as usize..self.counts[b] as usize
+            }
+        }
+    }
+
     /// Calls `found(b)` for the bodies in the cells along the path from `from` by
     /// `motion` (widened by the largest bodies and the usual motion), until it returns
     /// `false`; returns whether it never did.
@@ -385,7 +411,8 @@ impl Grid {
             let near_left = (index(x0 - reach.x, cell.x) - 1).max(left);
             let near_right = (index(x1 + reach.x, cell.x) + 1).min(right);
             let (start, end) = (key(near_left, y), key(near_right, y));
-            let first = cells.partition_point(|&(k, _)| k < start);
+            let row = self.row(y);
+            let first = row.start + cells[row].partition_point(|&(k, _)| k < start);
             for (b, &(k2, _)) in cells.iter().enumerate().skip(first) {
                 if k2 > end {
                     break;
@@ -430,4 +457,54 @@ fn row_and_column(k: u64) -> (i64, i64) {
 /// The cell a coordinate falls in.
 fn index(v: f32, cell: f32) -> i64 {
     (v / cell).floor().clamp(-1.0e9, 1.0e9) as i64
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The grid of `points` (still disks of radius 4), sorted.
+    fn sorted(points: &[Point2D<f32>]) -> Grid {
+        let mut grid = Grid::default();
+        let half = vec![Vector2D::new(4.0, 4.0); points.len()];
+        let motion = vec![Vector2D::zero(); points.len()];
+        let _ = grid.sort(points, &half, &motion, &[]).count();
+        grid
+    }
+
+    /// A search along a path looks a row up in the rows' index a sort by counting
+    /// leaves: every row's range holds exactly the bodies of that row, rows beyond the
+    /// grid hold none, and a grid sorted by comparison (bodies scattered across far
+    /// more rows than there are bodies) has no index and searches all the cells.
+    #[test]
+    fn the_rows_index_holds_each_rows_bodies() {
+        let points: Vec<_> = (0..500)
+            .map(|i| Point2D::new((i * 37 % 211) as f32 * 3.0, (i * 53 % 197) as f32 * 2.0))
+            .collect();
+        let grid = sorted(&points);
+        let top = grid
+            .top_row
+            .expect("a compact layout is sorted by counting");
+        let rows: Vec<i64> = grid
+            .cells
+            .iter()
+            .map(|&(k, _)| row_and_column(k).0)
+            .collect();
+        let bottom = *rows.last().expect("bodies");
+        assert!(bottom - top >= 3, "rows {top}..={bottom}: too few to test");
+        for y in top - 2..=bottom + 2 {
+            let expected: Vec<usize> = (0..rows.len()).filter(|&b| rows[b] == y).collect();
+            let found: Vec<usize> = grid.row(y).collect();
+            assert_eq!(found, expected, "row {y} of {top}..={bottom}");
+        }
+        let scattered: Vec<_> = (0..50)
+            .map(|i| Point2D::new(0.0, i as f32 * 1.0e6))
+            .collect();
+        let grid = sorted(&scattered);
+        assert_eq!(
+            grid.top_row, None,
+            "50 bodies over 50 million units of rows"
+        );
+        assert_eq!(grid.row(3), 0..50, "no index: every cell");
+    }
 }

@@ -52,6 +52,12 @@ pub(crate) struct StressForce {
     /// Scratch: which nodes are heated, for a held layout.
     #[serde(skip)]
     heated: Vec<bool>,
+    /// Each node's pull and stiffness of its terms on this substep (`None`: not pushed,
+    /// or not finite), and the substep's `dt²`, between `work_out` and `add_to`.
+    #[serde(skip)]
+    pulls: Vec<Option<(Vector2D<f32>, f32)>>,
+    #[serde(skip)]
+    dt2: f32,
     /// Set for each substep by the forces: the layout rested and keeps its rest's
     /// balance (`rest_bias.rs`), so the pivot terms are held for every node the
     /// disturbance did not heat (worked out afresh only for the heated ones), and a node
@@ -116,6 +122,151 @@ impl StressForce {
         self.shape = shape;
         self.pivot_force.clear();
         self.since = 0;
+    }
+
+    /// What a substep's terms need that reads the world (on the calling thread: a
+    /// host's node type need not be shared between threads): the model brought up to
+    /// date, the pivots' positions when their terms are due, and which nodes are heated.
+    /// `None` when the terms pull nothing (no model settings, or no finite stiffness).
+    pub(crate) fn prepare<N: Clone + Eq + Hash>(
+        &mut self,
+        frame: &ForceContext<'_, N>,
+    ) -> Option<TermStep> {
+        self.pulls.clear();
+        let stress = frame.config.stress?;
+        let exact_hops = stress.exact_hops.max(1);
+        self.refresh(
+            frame.world,
+            stress.pivot_count(frame.world.slot_count()),
+            exact_hops,
+        );
+        let n = frame.points.len();
+        let hop = frame.world.hop_length().unwrap_or(stress.hop_length);
+        let k = frame.config.edge_stiffness() * frame.world.applied_spring_scale();
+        if !(k > 0.0 && k.is_finite() && hop > 0.0 && hop.is_finite()) {
+            return None;
+        }
+        let period = stress.pivot_period.max(1);
+        let renew = self.pivot_force.len() != n;
+        let fresh = renew || self.since % period == 0;
+        let hold_cold = self.hold_cold && !renew;
+        if fresh && !hold_cold {
+            self.pivot_force.clear();
+            self.pivot_force.resize(n, Vector2D::zero());
+            self.pivot_stiffness.clear();
+            self.pivot_stiffness.resize(n, 0.0);
+            self.pivot_at.clear();
+            self.pivot_at.resize(n, Point2D::origin());
+        }
+        self.since = self.since.wrapping_add(1);
+        if fresh {
+            // Each component's pivots' positions, padded to whole lanes.
+            self.xs.clear();
+            self.ys.clear();
+            self.pivot_start.clear();
+            for &(a, b) in &self.model.pivot_range {
+                self.pivot_start.push(self.xs.len());
+                for &q in &self.model.pivots[a as usize..b as usize] {
+                    let point = frame.points[q as usize];
+                    self.xs.push(point.x);
+                    self.ys.push(point.y);
+                }
+                let width = self.pivot_start.last().map_or(0, |&s| s) + padded((b - a) as usize);
+                self.xs.resize(width, 0.0);
+                self.ys.resize(width, 0.0);
+            }
+        }
+        let end = n.min(self.model.component.len());
+        // Which nodes a held layout works out afresh.
+        self.heated.clear();
+        if fresh && hold_cold {
+            self.heated
+                .extend((0..end).map(|i| frame.world.host_at(i).heat > 0.0));
+        }
+        Some(TermStep {
+            hop,
+            k,
+            dt2: frame.dt * frame.dt,
+            fresh,
+            hold_cold,
+            end,
+        })
+    }
+
+    /// Each pushed node's pull and stiffness of its terms for the substep `step`
+    /// prepared, kept for [`add_to`](Self::add_to): in runs of nodes side by side
+    /// under `parallel` (a node's sums are its own, so the bits do not depend on the
+    /// thread count). Reads no world: it may run beside work that does.
+    pub(crate) fn work_out(&mut self, step: TermStep, points: &[Point2D<f32>], pushed: &[bool]) {
+        let terms = NodeTerms {
+            model: &self.model,
+            points,
+            pushed,
+            heated: &self.heated,
+            xs: &self.xs,
+            ys: &self.ys,
+            pivot_start: &self.pivot_start,
+            hop: step.hop,
+            k: step.k,
+            fresh: step.fresh,
+            hold_cold: step.hold_cold,
+        };
+        let end = step.end;
+        self.pulls.clear();
+        self.pulls.resize(end, None);
+        self.dt2 = step.dt2;
+        let mut jobs: Vec<_> = self.pivot_force[..end]
+            .chunks_mut(NODES_A_RUN)
+            .zip(self.pivot_stiffness[..end].chunks_mut(NODES_A_RUN))
+            .zip(self.pivot_at[..end].chunks_mut(NODES_A_RUN))
+            .zip(self.pulls.chunks_mut(NODES_A_RUN))
+            .enumerate()
+            .map(|(r, (((force, stiffness), at), pulls))| {
+                let held = Held {
+                    force,
+                    stiffness,
+                    at,
+                };
+                (r * NODES_A_RUN, held, pulls)
+            })
+            .collect();
+        parallel::for_each(
+            &mut jobs,
+            <(Vec<f32>, Vec<f32>)>::default,
+            |scratch, (first, held, pulls)| {
+                for (o, pull) in pulls.iter_mut().enumerate() {
+                    *pull = terms.pull_on(*first + o, held, o, scratch);
+                }
+            },
+        );
+    }
+
+    /// Adds the pulls [`work_out`](Self::work_out) found to the springs' sums (the
+    /// stiffness, times `dt²`, to what the implicit step divides by).
+    pub(crate) fn add_to(&self, out: &mut ForceSums) {
+        let dt2 = self.dt2;
+        let pulls = &self.pulls;
+        let end = pulls.len();
+        let resistance = &mut out.resistance[..end];
+        let mut jobs: Vec<_> = out.springs[..end]
+            .chunks_mut(NODES_A_RUN)
+            .zip(resistance.chunks_mut(NODES_A_RUN))
+            .enumerate()
+            .collect();
+        parallel::for_each(
+            &mut jobs,
+            || (),
+            |(), (r, (springs, resistance))| {
+                let pulls = &pulls[*r * NODES_A_RUN..];
+                let sums = springs.iter_mut().zip(resistance.iter_mut());
+                for ((spring, resistance), pull) in sums.zip(pulls) {
+                    if let Some((f, stiffness)) = *pull {
+                        *spring += f;
+                        *resistance += dt2 * stiffness;
+                    }
+                }
+            },
+        );
     }
 }
 
@@ -184,110 +335,27 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for StressForce {
     }
 
     fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
-        let Some(stress) = frame.config.stress else {
-            return;
-        };
-        let exact_hops = stress.exact_hops.max(1);
-        self.refresh(
-            frame.world,
-            stress.pivot_count(frame.world.slot_count()),
-            exact_hops,
-        );
-        let n = frame.points.len();
-        let hop = frame.world.hop_length().unwrap_or(stress.hop_length);
-        let k = frame.config.edge_stiffness() * frame.world.applied_spring_scale();
-        if !(k > 0.0 && k.is_finite() && hop > 0.0 && hop.is_finite()) {
-            return;
+        if let Some(step) = self.prepare(frame) {
+            self.work_out(step, frame.points, frame.pushed);
+            self.add_to(out);
         }
-        let dt2 = frame.dt * frame.dt;
-        let period = stress.pivot_period.max(1);
-        let renew = self.pivot_force.len() != n;
-        let fresh = renew || self.since % period == 0;
-        let hold_cold = self.hold_cold && !renew;
-        if fresh && !hold_cold {
-            self.pivot_force.clear();
-            self.pivot_force.resize(n, Vector2D::zero());
-            self.pivot_stiffness.clear();
-            self.pivot_stiffness.resize(n, 0.0);
-            self.pivot_at.clear();
-            self.pivot_at.resize(n, Point2D::origin());
-        }
-        self.since = self.since.wrapping_add(1);
-        if fresh {
-            // Each component's pivots' positions, padded to whole lanes.
-            self.xs.clear();
-            self.ys.clear();
-            self.pivot_start.clear();
-            for &(a, b) in &self.model.pivot_range {
-                self.pivot_start.push(self.xs.len());
-                for &q in &self.model.pivots[a as usize..b as usize] {
-                    let point = frame.points[q as usize];
-                    self.xs.push(point.x);
-                    self.ys.push(point.y);
-                }
-                let width = self.pivot_start.last().map_or(0, |&s| s) + padded((b - a) as usize);
-                self.xs.resize(width, 0.0);
-                self.ys.resize(width, 0.0);
-            }
-        }
-        let end = n.min(self.model.component.len());
-        // Which nodes a held layout works out afresh (read here: a host's node type
-        // need not be shared between threads).
-        let mut heated = std::mem::take(&mut self.heated);
-        heated.clear();
-        if fresh && hold_cold {
-            heated.extend((0..end).map(|i| frame.world.host_at(i).heat > 0.0));
-        }
-        let terms = NodeTerms {
-            model: &self.model,
-            points: frame.points,
-            pushed: frame.pushed,
-            heated: &heated,
-            xs: &self.xs,
-            ys: &self.ys,
-            pivot_start: &self.pivot_start,
-            hop,
-            k,
-            fresh,
-            hold_cold,
-        };
-        // Runs of nodes side by side under `parallel`: a node's sums are its own, so the
-        // bits do not depend on the thread count.
-        let mut jobs: Vec<_> = self.pivot_force[..end]
-            .chunks_mut(NODES_A_RUN)
-            .zip(self.pivot_stiffness[..end].chunks_mut(NODES_A_RUN))
-            .zip(self.pivot_at[..end].chunks_mut(NODES_A_RUN))
-            .zip(out.springs[..end].chunks_mut(NODES_A_RUN))
-            .zip(out.resistance[..end].chunks_mut(NODES_A_RUN))
-            .enumerate()
-            .map(|(r, ((((force, stiffness), at), springs), resistance))| {
-                let held = Held {
-                    force,
-                    stiffness,
-                    at,
-                };
-                (r * NODES_A_RUN, held, springs, resistance)
-            })
-            .collect();
-        parallel::for_each(
-            &mut jobs,
-            <(Vec<f32>, Vec<f32>)>::default,
-            |scratch, (first, held, springs, resistance)| {
-                for o in 0..springs.len() {
-                    if let Some((f, stiffness)) = terms.pull_on(*first + o, held, o, scratch) {
-                        springs[o] += f;
-                        resistance[o] += dt2 * stiffness;
-                    }
-                }
-            },
-        );
-        self.heated = heated;
     }
 
     fn reset(&mut self) {
         // A new world counts its versions from 0 again.
         *self = Self::default();
     }
+}
+
+/// What [`StressForce::prepare`] found of a substep, for its terms.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct TermStep {
+    hop: f32,
+    k: f32,
+    dt2: f32,
+    fresh: bool,
+    hold_cold: bool,
+    end: usize,
 }
 
 /// Nodes whose stress terms are summed in one run (fixed, so the sums do not depend on

@@ -52,10 +52,14 @@ pub(crate) struct StressForce {
     /// Scratch: which nodes are heated, for a held layout.
     #[serde(skip)]
     heated: Vec<bool>,
-    /// Each node's pull and stiffness of its terms on this substep (`None`: not pushed,
-    /// or not finite), and the substep's `dt²`, between `work_out` and `add_to`.
+    /// By run of [`NODES_A_RUN`] nodes, each pushed node's pull and stiffness of its
+    /// terms on this substep `(node, pull, stiffness)` (a settled layout disturbed in
+    /// one place keeps a few), between `work_out` and `add_to`, with the nodes they
+    /// cover and the substep's `dt²`.
     #[serde(skip)]
-    pulls: Vec<Option<(Vector2D<f32>, f32)>>,
+    pulls: Vec<Vec<(u32, Vector2D<f32>, f32)>>,
+    #[serde(skip)]
+    end: usize,
     #[serde(skip)]
     dt2: f32,
     /// Set for each substep by the forces: the layout rested and keeps its rest's
@@ -132,7 +136,7 @@ impl StressForce {
         &mut self,
         frame: &ForceContext<'_, N>,
     ) -> Option<TermStep> {
-        self.pulls.clear();
+        self.end = 0;
         let stress = frame.config.stress?;
         let exact_hops = stress.exact_hops.max(1);
         self.refresh(
@@ -212,14 +216,14 @@ impl StressForce {
             hold_cold: step.hold_cold,
         };
         let end = step.end;
-        self.pulls.clear();
-        self.pulls.resize(end, None);
-        self.dt2 = step.dt2;
+        // The runs' lists keep their room from substep to substep.
+        self.pulls.resize_with(end.div_ceil(NODES_A_RUN), Vec::new);
+        (self.end, self.dt2) = (end, step.dt2);
         let mut jobs: Vec<_> = self.pivot_force[..end]
             .chunks_mut(NODES_A_RUN)
             .zip(self.pivot_stiffness[..end].chunks_mut(NODES_A_RUN))
             .zip(self.pivot_at[..end].chunks_mut(NODES_A_RUN))
-            .zip(self.pulls.chunks_mut(NODES_A_RUN))
+            .zip(self.pulls.iter_mut())
             .enumerate()
             .map(|(r, (((force, stiffness), at), pulls))| {
                 let held = Held {
@@ -234,8 +238,11 @@ impl StressForce {
             &mut jobs,
             <(Vec<f32>, Vec<f32>)>::default,
             |scratch, (first, held, pulls)| {
-                for (o, pull) in pulls.iter_mut().enumerate() {
-                    *pull = terms.pull_on(*first + o, held, o, scratch);
+                pulls.clear();
+                for o in 0..held.force.len() {
+                    if let Some((f, stiffness)) = terms.pull_on(*first + o, held, o, scratch) {
+                        pulls.push(((*first + o) as u32, f, stiffness));
+                    }
                 }
             },
         );
@@ -244,26 +251,22 @@ impl StressForce {
     /// Adds the pulls [`work_out`](Self::work_out) found to the springs' sums (the
     /// stiffness, times `dt²`, to what the implicit step divides by).
     pub(crate) fn add_to(&self, out: &mut ForceSums) {
-        let dt2 = self.dt2;
-        let pulls = &self.pulls;
-        let end = pulls.len();
+        let (dt2, end) = (self.dt2, self.end);
         let resistance = &mut out.resistance[..end];
         let mut jobs: Vec<_> = out.springs[..end]
             .chunks_mut(NODES_A_RUN)
             .zip(resistance.chunks_mut(NODES_A_RUN))
+            .zip(&self.pulls)
             .enumerate()
             .collect();
         parallel::for_each(
             &mut jobs,
             || (),
-            |(), (r, (springs, resistance))| {
-                let pulls = &pulls[*r * NODES_A_RUN..];
-                let sums = springs.iter_mut().zip(resistance.iter_mut());
-                for ((spring, resistance), pull) in sums.zip(pulls) {
-                    if let Some((f, stiffness)) = *pull {
-                        *spring += f;
-                        *resistance += dt2 * stiffness;
-                    }
+            |(), (r, ((springs, resistance), pulls))| {
+                let first = *r * NODES_A_RUN;
+                for &(i, f, stiffness) in pulls.iter() {
+                    springs[i as usize - first] += f;
+                    resistance[i as usize - first] += dt2 * stiffness;
                 }
             },
         );

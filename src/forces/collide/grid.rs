@@ -478,8 +478,10 @@ mod tests {
     /// more rows than there are bodies) has no index and searches all the cells.
     #[test]
     fn the_rows_index_holds_each_rows_bodies() {
+        // A band 60 units high left empty: rows within the grid that hold no body.
         let points: Vec<_> = (0..500)
             .map(|i| Point2D::new((i * 37 % 211) as f32 * 3.0, (i * 53 % 197) as f32 * 2.0))
+            .filter(|p| !(150.0..210.0).contains(&p.y))
             .collect();
         let grid = sorted(&points);
         let top = grid
@@ -492,11 +494,17 @@ mod tests {
             .collect();
         let bottom = *rows.last().expect("bodies");
         assert!(bottom - top >= 3, "rows {top}..={bottom}: too few to test");
+        let mut empty = 0;
         for y in top - 2..=bottom + 2 {
             let expected: Vec<usize> = (0..rows.len()).filter(|&b| rows[b] == y).collect();
+            empty += usize::from(expected.is_empty() && (top..=bottom).contains(&y));
             let found: Vec<usize> = grid.row(y).collect();
             assert_eq!(found, expected, "row {y} of {top}..={bottom}");
         }
+        assert!(
+            empty >= 3,
+            "{empty} empty rows within the grid: the band left none"
+        );
         let scattered: Vec<_> = (0..50)
             .map(|i| Point2D::new(0.0, i as f32 * 1.0e6))
             .collect();

@@ -87,8 +87,8 @@ impl StressForce {
         self.since = 0;
     }
 
-    /// Works the pivot terms out afresh for every node on the next
-    /// [`apply`](BodyForce::apply), instead of holding them: what a rest's balance is
+    /// Works the pivot terms out afresh for every node on the next substep
+    /// ([`prepare`](Self::prepare) and [`work_out`](Self::work_out)), instead of holding them: what a rest's balance is
     /// measured with, so that no node holds a pull worked out where the pivots were long
     /// ago.
     pub(crate) fn renew_pivot_terms(&mut self) {

@@ -558,8 +558,8 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         }
         // Last, as the stress terms always were: the sums' bits do not depend on where
         // the terms were worked out.
-        if stress_step.is_some() {
-            self.stress.add_to(&mut self.sums);
+        if let Some(step) = stress_step {
+            self.stress.add_to(step, &mut self.sums);
         }
     }
 

@@ -54,14 +54,9 @@ pub(crate) struct StressForce {
     heated: Vec<bool>,
     /// By run of [`NODES_A_RUN`] nodes, each pushed node's pull and stiffness of its
     /// terms on this substep `(node, pull, stiffness)` (a settled layout disturbed in
-    /// one place keeps a few), between `work_out` and `add_to`, with the nodes they
-    /// cover and the substep's `dt²`.
+    /// one place keeps a few), between `work_out` and `add_to`.
     #[serde(skip)]
     pulls: Vec<Vec<(u32, Vector2D<f32>, f32)>>,
-    #[serde(skip)]
-    end: usize,
-    #[serde(skip)]
-    dt2: f32,
     /// Set for each substep by the forces: the layout rested and keeps its rest's
     /// balance (`rest_bias.rs`), so the pivot terms are held for every node the
     /// disturbance did not heat (worked out afresh only for the heated ones), and a node
@@ -88,8 +83,8 @@ impl StressForce {
     }
 
     /// Works the pivot terms out afresh for every node on the next substep
-    /// ([`prepare`](Self::prepare) and [`work_out`](Self::work_out)), instead of holding them: what a rest's balance is
-    /// measured with, so that no node holds a pull worked out where the pivots were long
+    /// ([`prepare`](Self::prepare) and [`work_out`](Self::work_out)), instead of
+    /// holding them: what a rest's balance is measured with, so that no node holds a pull worked out where the pivots were long
     /// ago.
     pub(crate) fn renew_pivot_terms(&mut self) {
         self.pivot_force.clear();
@@ -136,7 +131,6 @@ impl StressForce {
         &mut self,
         frame: &ForceContext<'_, N>,
     ) -> Option<TermStep> {
-        self.end = 0;
         let stress = frame.config.stress?;
         let exact_hops = stress.exact_hops.max(1);
         self.refresh(
@@ -218,7 +212,6 @@ impl StressForce {
         let end = step.end;
         // The runs' lists keep their room from substep to substep.
         self.pulls.resize_with(end.div_ceil(NODES_A_RUN), Vec::new);
-        (self.end, self.dt2) = (end, step.dt2);
         let mut jobs: Vec<_> = self.pivot_force[..end]
             .chunks_mut(NODES_A_RUN)
             .zip(self.pivot_stiffness[..end].chunks_mut(NODES_A_RUN))
@@ -248,10 +241,10 @@ impl StressForce {
         );
     }
 
-    /// Adds the pulls [`work_out`](Self::work_out) found to the springs' sums (the
-    /// stiffness, times `dt²`, to what the implicit step divides by).
-    pub(crate) fn add_to(&self, out: &mut ForceSums) {
-        let (dt2, end) = (self.dt2, self.end);
+    /// Adds the pulls [`work_out`](Self::work_out) found for `step` to the springs'
+    /// sums (the stiffness, times `dt²`, to what the implicit step divides by).
+    pub(crate) fn add_to(&self, step: TermStep, out: &mut ForceSums) {
+        let (dt2, end) = (step.dt2, step.end);
         let resistance = &mut out.resistance[..end];
         let mut jobs: Vec<_> = out.springs[..end]
             .chunks_mut(NODES_A_RUN)
@@ -340,7 +333,7 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for StressForce {
     fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
         if let Some(step) = self.prepare(frame) {
             self.work_out(step, frame.points, frame.pushed);
-            self.add_to(out);
+            self.add_to(step, out);
         }
     }
 

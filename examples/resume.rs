@@ -10,9 +10,10 @@
 //!   calls, then the leaf farthest from the centre dragged 100 units outward over 10
 //!   frames and let go, run to rest.
 //!
-//! Run with `cargo run --release --example resume [--default | --fast] [scene ...]`
-//! (`force_directed()` by default; scenes default to `n10000_e25000` for the snapshot
-//! and `1138_bus` for the picture).
+//! Run with `cargo run --release --example resume [--default | --fast | --stress]
+//! [--no-picture] [scene ...]` (`force_directed()` by default; scenes default to
+//! `n10000_e25000` for the snapshot and `1138_bus` for the picture; a generator's name
+//! such as `random_n100000_e250000` works too).
 
 use std::time::Instant;
 
@@ -137,6 +138,8 @@ fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let config = if args.iter().any(|a| a == "--default") {
         RapierLayoutConfig::default()
+    } else if args.iter().any(|a| a == "--stress") {
+        RapierLayoutConfig::stress()
     } else if args.iter().any(|a| a == "--fast") {
         RapierLayoutConfig::force_directed_fast()
     } else {
@@ -151,9 +154,12 @@ fn main() {
         snapshot("n10000_e25000", &config);
         picture("1138_bus", &config);
     } else {
+        let pictures = !args.iter().any(|a| a == "--no-picture");
         for name in scenes {
             snapshot(name, &config);
-            picture(name, &config);
+            if pictures {
+                picture(name, &config);
+            }
         }
     }
 }

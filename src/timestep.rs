@@ -27,6 +27,10 @@ pub struct StepPlan {
     pub frame_dt: f32,
 }
 
+/// The most substeps one call takes, whatever `max_substeps` says: a bound on a call's
+/// cost (17 s of simulated time at 60 Hz).
+const MAX_FRAME_SUBSTEPS: u32 = 1024;
+
 impl StepPlan {
     /// Simulated time this call advances: `substeps × substep_dt`.
     pub fn simulated(&self) -> f32 {
@@ -59,7 +63,7 @@ impl StepPlan {
             };
         }
         let cap = positive_or(max_frame_time, 0.25);
-        let max_substeps = max_substeps.max(1);
+        let max_substeps = max_substeps.clamp(1, MAX_FRAME_SUBSTEPS);
         let time = dt.min(cap).max(MIN_TIMESTEP);
         let dt = dt.max(MIN_TIMESTEP);
         // A hair of tolerance so 0.05 s at 1/60 s is 3 substeps, not 4.

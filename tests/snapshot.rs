@@ -223,6 +223,19 @@ fn a_damaged_snapshot_is_refused_and_changes_nothing() {
             expected: LayoutSnapshot::<u32>::FORMAT
         })
     );
+    // A format-1 snapshot (written before rapier's state was sealed) reads, and is
+    // refused by its format.
+    let mut old = json.clone();
+    old["format"] = serde_json::json!(1);
+    old["world"].as_object_mut().unwrap().remove("seals");
+    let snapshot: LayoutSnapshot<u32> = serde_json::from_value(old).unwrap();
+    assert_eq!(
+        target.layout.restore(snapshot),
+        Err(SnapshotError::Format {
+            found: 1,
+            expected: 2
+        })
+    );
     // A node whose body is another node's.
     let slots = json["world"]["slots"].as_array_mut().unwrap();
     let body = slots[1]["body"].clone();

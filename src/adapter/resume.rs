@@ -15,7 +15,7 @@ use super::rest::{Rest, REST_TIME};
 use super::RapierLayout;
 use crate::config::RapierLayoutConfig;
 use crate::forces::{Forces, SavedForces};
-use crate::input::snapshot_error::SnapshotError;
+use crate::input::snapshot_error::{check_counters, SnapshotError};
 use crate::world::saved::SavedWorld;
 use crate::world::RapierSceneWorld;
 
@@ -84,8 +84,10 @@ pub struct LayoutSnapshot<N> {
 impl<N> LayoutSnapshot<N> {
     /// The snapshot format this build writes and reads. A snapshot of another format
     /// is refused ([`SnapshotError::Format`]); within a format, a snapshot restores in
-    /// any build, and continues bit for bit in the build that took it.
-    pub const FORMAT: u32 = 1;
+    /// any build of the same rapier version, and continues bit for bit in the build that
+    /// took it. Format 2 seals rapier's state ([`RapierLayout::restore`]); format 1
+    /// snapshots read but are refused.
+    pub const FORMAT: u32 = 2;
 
     /// The configuration the layout ran under (a restore puts it back).
     pub fn config(&self) -> &RapierLayoutConfig {
@@ -153,8 +155,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     }
 
     /// Everything the next call needs to continue exactly where this layout is
-    /// ([`LayoutSnapshot`]). Costs a copy of the world: 1.6 ms at n = 10,000 under
-    /// [`force_directed`](RapierLayoutConfig::force_directed) (`docs/performance.md`, Keep and resume).
+    /// ([`LayoutSnapshot`]). Costs a copy of the world; writing it (serialising)
+    /// adds a hash of rapier's sets, their seals (`docs/performance.md`, Keep and
+    /// resume, gives the figures).
     pub fn snapshot(&self) -> LayoutSnapshot<N> {
         LayoutSnapshot {
             format: LayoutSnapshot::<N>::FORMAT,
@@ -186,13 +189,40 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// call applies it as any configuration change.
     ///
     /// What the last call reported ([`skipped`](Self::skipped),
-    /// [`recovered_nodes`](Self::recovered_nodes)) is not part of a snapshot. Costs the
-    /// checks of the snapshot's parts and building the id lookups: 1.3 ms at
-    /// n = 10,000, plus the first call's O(n + e) topology check.
+    /// [`recovered_nodes`](Self::recovered_nodes)) is not part of a snapshot.
+    ///
+    /// # What is checked
+    /// A snapshot comes back from disk, from other builds and from other people, so a
+    /// restore trusts none of it: after an `Ok`, no call can panic or go non-finite on
+    /// what it restored.
+    /// - **Rapier's state** (bodies, colliders, joints, islands, broad and narrow phase,
+    ///   CCD, integration parameters) holds private handles and indices no caller can
+    ///   check, so each set is sealed when the snapshot is written (serialised), by a
+    ///   64-bit hash of what rapier wrote, and a set read back that no longer matches
+    ///   its seal is refused. The seal finds damage (a changed value, a lost or
+    ///   repeated item); it is no signature, and a snapshot edited on purpose with its
+    ///   seals worked out again is trusted as rapier wrote it. A snapshot kept in
+    ///   memory and never written holds the world's own sets and pays for no seal.
+    /// - **The layout's own parts** are checked against each other and against rapier's:
+    ///   every node's body and collider exists and is the one it names, ids and joints
+    ///   are not repeated and every joint's ends and rapier joint exist; positions,
+    ///   velocities, held forces and warm-start impulses are finite; the stress model's
+    ///   terms index within its nodes, components, pivots and weight tables; the host's
+    ///   forces as last read are ones a host could set; counts are below 2⁵³.
+    /// - **Settings** (the configuration, heat, schedule) are used as any host setting
+    ///   is: a value out of range is clamped where it is read, and the counts that bound
+    ///   a call's work are capped (see [`Accuracy::Custom`](crate::Accuracy::Custom) and
+    ///   [`max_substeps`](RapierLayoutConfig::max_substeps)).
+    ///
+    /// A restore costs these checks, the seals' hashes and building the id lookups,
+    /// linear in the snapshot's size: `docs/performance.md` (Keep and resume) gives the
+    /// figures at 10,000 and 100,000 nodes and the command that measures them. The
+    /// first call after it adds the O(n + e) topology check.
     ///
     /// # Errors
-    /// [`SnapshotError`] for a snapshot of another format or one whose parts do not
-    /// agree; the layout is left as it was.
+    /// [`SnapshotError::Format`] for a snapshot of another format,
+    /// [`SnapshotError::Inconsistent`] naming the first part that does not agree; the
+    /// layout is left as it was.
     pub fn restore(&mut self, snapshot: LayoutSnapshot<N>) -> Result<(), SnapshotError> {
         if snapshot.format != LayoutSnapshot::<N>::FORMAT {
             return Err(SnapshotError::Format {
@@ -200,10 +230,16 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 expected: LayoutSnapshot::<N>::FORMAT,
             });
         }
+        check_counters(&[
+            (snapshot.rebuilds, "rebuilds"),
+            (snapshot.patches, "patches"),
+            (snapshot.stamp, "stamp"),
+        ])?;
         let world = snapshot
             .world
             .map(RapierSceneWorld::from_saved)
             .transpose()?;
+        let forces = Forces::from_saved(snapshot.forces).map_err(SnapshotError::Inconsistent)?;
         *self = Self {
             config: snapshot.config,
             world,
@@ -216,7 +252,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             flights: snapshot.flights,
             heat: snapshot.heat,
             rest: snapshot.rest,
-            forces: Forces::from_saved(snapshot.forces),
+            forces,
             joint_dt: snapshot.joint_dt,
             gravity: snapshot.gravity,
             cold_start: snapshot.cold_start,

@@ -87,11 +87,22 @@ impl Seating {
             self.key(p + Vector2D::new(look, look)),
         );
         let mut clearance = reach;
+        let mut nearer = |&(q, r): &Disk| clearance = clearance.min((q - p).length() - radius - r);
+        let span = |lo: i32, hi: i32| i64::from(hi) - i64::from(lo) + 1;
+        // A reach wider than the disks' extent (a far seat in a wide layout) reads the
+        // occupied cells rather than walk every empty one: the least of the same
+        // distances, in any order.
+        if span(lo.0, hi.0).saturating_mul(span(lo.1, hi.1)) > self.cells.len() as i64 {
+            self.cells.values().flatten().for_each(&mut nearer);
+            return clearance;
+        }
         for x in lo.0..=hi.0 {
             for y in lo.1..=hi.1 {
-                for &(q, r) in self.cells.get(&(x, y)).into_iter().flatten() {
-                    clearance = clearance.min((q - p).length() - radius - r);
-                }
+                self.cells
+                    .get(&(x, y))
+                    .into_iter()
+                    .flatten()
+                    .for_each(&mut nearer);
             }
         }
         clearance

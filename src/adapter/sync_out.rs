@@ -5,10 +5,12 @@
 use std::hash::Hash;
 
 use euclid::default::{Point2D, Vector2D};
+use rapier2d::prelude::Vector;
 
 use super::matching::{Matching, NO_SLOT};
 use super::RapierLayout;
 use crate::input::scene::CanvasSceneInput;
+use crate::input::validation::{position_in_range, MAX_COORDINATE};
 use crate::layout::{DeltaMap, IdHasher};
 use crate::world::RapierSceneWorld;
 
@@ -68,8 +70,16 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         // Told positions the host's f32 addition does not land on the body's exactly are
         // read again next call, when the world no longer reports them changed.
         let mut inexact = Vec::new();
-        for &(s, delta) in &moved.deltas {
+        for &(s, mut delta) in &moved.deltas {
             let s = s as usize;
+            if let Some(edge) = beyond_range(world.position_at(s)) {
+                // The range is the host's too: a node pushed past it (disks wider than
+                // the range apart) stops at its edge, where the host can hand it back.
+                let body = world.body_at_mut(s);
+                body.set_translation(Vector::new(edge.x, edge.y), true);
+                body.set_linvel(Vector::ZERO, true);
+                delta = edge - world.anchor_at(s);
+            }
             let told = world.anchor_at(s) + delta;
             // The host adds the delta with the same f32 addition.
             world.host_at_mut(s).told = told;
@@ -90,6 +100,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         report.max_speed = max_speed_sq.sqrt();
         report
     }
+}
+
+/// The nearest point within ±[`MAX_COORDINATE`] of a position beyond it (`None` within).
+fn beyond_range(p: Point2D<f32>) -> Option<Point2D<f32>> {
+    let edge = |v: f32| v.clamp(-MAX_COORDINATE, MAX_COORDINATE);
+    (!position_in_range(p) && p.is_finite()).then(|| Point2D::new(edge(p.x), edge(p.y)))
 }
 
 /// The world slot of every node the scene matched, in the scene's order.

@@ -77,7 +77,8 @@ pub struct RapierLayoutConfig {
     pub max_frame_time: f32,
     /// Most substeps one call runs. With the default 1/60 s timestep, 16 substeps cover
     /// the default `max_frame_time`. Lower it to bound the worst-case cost of a call;
-    /// simulated time beyond `max_substeps × timestep` is dropped. Default: `16`.
+    /// simulated time beyond `max_substeps × timestep` is dropped. At most 1,024 (a
+    /// larger count is taken as 1,024). Default: `16`.
     pub max_substeps: u32,
     /// Rapier's `length_unit`: the size of a typical object in world units. Rapier scales
     /// its tolerances (contact slop, sleep threshold, speed cap) by it. Canvas nodes are

@@ -28,14 +28,24 @@ pub enum Accuracy {
     Precise,
     /// Explicit settings.
     Custom {
-        /// Rapier's `num_solver_iterations` (at least 1).
+        /// Rapier's `num_solver_iterations`, from 1 to 256 (a count beyond is
+        /// taken as 256: a bound on a frame's cost whatever a configuration says).
         solver_iterations: usize,
-        /// Rapier's `num_internal_pgs_iterations` (at least 1).
+        /// Rapier's `num_internal_pgs_iterations`, from 1 to 256.
         internal_pgs_iterations: usize,
-        /// Substeps per fixed timestep (at least 1): `k` shortens every substep `k`-fold.
+        /// Substeps per fixed timestep, from 1 to 64: `k` shortens every
+        /// substep `k`-fold.
         substeps: u32,
     },
 }
+
+/// The most solver or internal PGS iterations an [`Accuracy::Custom`] asks for: 32
+/// times [`Accuracy::Precise`]'s, far past where more iterations change a layout, and a
+/// bound on a frame's cost whatever a configuration (or a damaged snapshot) says.
+pub(crate) const MAX_ITERATIONS: usize = 256;
+
+/// The most substeps per fixed timestep an [`Accuracy::Custom`] asks for.
+pub(crate) const MAX_SUBSTEPS: u32 = 64;
 
 /// What an [`Accuracy`] setting asks of the solver, each at least 1.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -87,9 +97,9 @@ impl Accuracy {
                 internal_pgs_iterations,
                 substeps,
             } => (
-                solver_iterations.max(1),
-                internal_pgs_iterations.max(1),
-                substeps.max(1),
+                solver_iterations.clamp(1, MAX_ITERATIONS),
+                internal_pgs_iterations.clamp(1, MAX_ITERATIONS),
+                substeps.clamp(1, MAX_SUBSTEPS),
             ),
         }
     }

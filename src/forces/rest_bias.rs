@@ -66,6 +66,22 @@ impl RestBias {
         }
     }
 
+    /// Whether a snapshot's balance can be read as it is: the springs' and the other
+    /// forces' by the same slots (or none of the others), every pull finite.
+    pub(crate) fn check(&self) -> Result<(), &'static str> {
+        let same = self.others.is_empty() || self.others.len() == self.per_slot.len();
+        let finite = self
+            .per_slot
+            .iter()
+            .chain(&self.others)
+            .all(|f| f.is_finite());
+        if same && finite {
+            Ok(())
+        } else {
+            Err("forces.rest_bias")
+        }
+    }
+
     /// Whether the balance belongs to `world` as it is.
     pub(crate) fn holds<N: Clone + Eq + Hash>(
         &self,

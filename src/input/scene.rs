@@ -21,6 +21,7 @@ pub struct CanvasNode<N> {
     /// Where the host currently draws the node, in world units (canvas pixels).
     pub position: Point2D<f32>,
     /// Radius of the node's disk in world units; `0.0` means the layout's default radius.
+    /// At most [`MAX_COORDINATE`](crate::MAX_COORDINATE).
     /// A box ([`shape`](Self::shape)) ignores it.
     pub radius: f32,
     /// Optional text the host shows; layouts ignore it.

@@ -2,12 +2,16 @@
 //! `{"nodes":[{"id","x","y","radius"}],"edges":[[a,b],...]}`.
 //!
 //! The crate only derives `Deserialize`; read the text with the JSON crate of your
-//! choice (the examples use `serde_json`).
+//! choice (the examples use `serde_json`), whose error names what did not parse, then
+//! [`SceneFile::try_into_scene`] names what parsed but no layout can use. No bytes make
+//! either panic.
 
 use euclid::default::Point2D;
 use serde::{Deserialize, Serialize};
 
 use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput};
+use crate::input::validation::{validate, LayoutError};
+use crate::layout::LayoutExtras;
 
 /// One node of a scene file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -44,7 +48,10 @@ pub struct SceneFile {
 }
 
 impl SceneFile {
-    /// The scene a host would pass to a layout.
+    /// The scene a host would pass to a layout, as the file gives it, unchecked: a
+    /// layout's [`step`](crate::Layout::step) leaves out what it cannot use and lists it
+    /// in [`skipped`](crate::RapierLayout::skipped). A file from outside is better read
+    /// with [`try_into_scene`](Self::try_into_scene).
     pub fn into_scene(self) -> CanvasSceneInput<u32> {
         CanvasSceneInput::new(
             self.nodes
@@ -56,5 +63,29 @@ impl SceneFile {
                 .map(|(a, b)| CanvasEdge::new(a, b))
                 .collect(),
         )
+    }
+
+    /// The scene, once every node and edge is one a layout can use: the first that is
+    /// not, as [`try_step`](crate::RapierLayout::try_step) would name it.
+    ///
+    /// # Errors
+    /// [`LayoutError`] for the first node with a non-finite position, one beyond
+    /// ±[`MAX_COORDINATE`](crate::MAX_COORDINATE), a negative or non-finite radius or a
+    /// repeated id, or the first edge naming a node the file lacks.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{LayoutError, SceneFile};
+    /// let text = r#"{"nodes":[{"id":1,"x":0,"y":0},{"id":2,"x":40,"y":0}],"edges":[[1,3]]}"#;
+    /// let file: SceneFile = serde_json::from_str(text).unwrap();
+    /// assert!(matches!(
+    ///     file.try_into_scene(),
+    ///     Err(LayoutError::UnknownEdgeEndpoint { missing: 3, .. })
+    /// ));
+    /// ```
+    pub fn try_into_scene(self) -> Result<CanvasSceneInput<u32>, LayoutError<u32>> {
+        let scene = self.into_scene();
+        validate(&scene, &LayoutExtras::default())?;
+        Ok(scene)
     }
 }

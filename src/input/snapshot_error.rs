@@ -34,3 +34,18 @@ impl fmt::Display for SnapshotError {
 }
 
 impl std::error::Error for SnapshotError {}
+
+/// The largest count a snapshot may hold (calls, rebuilds, world versions, serials):
+/// 2⁵³, which a session counting once a microsecond reaches in 285 years. A larger one
+/// was damaged, and counting on from it would overflow.
+pub(crate) const COUNTER_LIMIT: u64 = 1 << 53;
+
+/// `Err` naming the first of `counters` above [`COUNTER_LIMIT`].
+pub(crate) fn check_counters(counters: &[(u64, &str)]) -> Result<(), SnapshotError> {
+    match counters.iter().find(|(value, _)| *value > COUNTER_LIMIT) {
+        Some((value, name)) => Err(SnapshotError::Inconsistent(format!(
+            "{name} is {value}, beyond any session's count"
+        ))),
+        None => Ok(()),
+    }
+}

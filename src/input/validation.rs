@@ -14,6 +14,8 @@ use crate::layout::{IdHasher, LayoutExtras};
 /// Beyond it an `f32` resolves positions to more than 64 units, rapier's contacts and
 /// sleep thresholds mean nothing, and the differences and squares its solver takes
 /// overflow towards infinity near `f32::MAX`: such a position is bad input, like a NaN.
+/// The layout keeps its own positions within it too: a node pushed to the edge stops
+/// there.
 pub const MAX_COORDINATE: f32 = 1.0e9;
 
 /// Bad input rejected by [`RapierLayout::try_step`](crate::RapierLayout::try_step). A
@@ -35,7 +37,7 @@ pub enum LayoutError<N> {
         /// The position the host gave.
         position: Point2D<f32>,
     },
-    /// A node's radius is NaN, infinite or negative.
+    /// A node's radius is NaN, infinite, negative or beyond [`MAX_COORDINATE`].
     InvalidRadius {
         /// The node.
         node: N,
@@ -111,7 +113,7 @@ impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
             ),
             LayoutError::InvalidRadius { node, radius } => write!(
                 f,
-                "node {node:?} has an invalid radius {radius} (must be finite and >= 0)"
+                "node {node:?} has an invalid radius {radius} (must be from 0 to {MAX_COORDINATE:e})"
             ),
             LayoutError::InvalidShape { node, part, value } => write!(
                 f,
@@ -154,13 +156,16 @@ impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
 
 impl<N: fmt::Debug> std::error::Error for LayoutError<N> {}
 
-/// Whether the layout can use this node's values: a position within ±[`MAX_COORDINATE`]
-/// a finite, non-negative radius (0 means the default radius) and a usable shape.
+/// Whether the layout can use this node's values: a position within ±[`MAX_COORDINATE`],
+/// a radius from 0 (the default radius) to [`MAX_COORDINATE`] and a usable shape.
 pub(crate) fn node_is_valid<N>(node: &CanvasNode<N>) -> bool {
-    position_in_range(node.position)
-        && node.radius.is_finite()
-        && node.radius >= 0.0
-        && node.shape.is_valid()
+    position_in_range(node.position) && radius_ok(node.radius) && node.shape.is_valid()
+}
+
+/// A radius from 0 (the default radius) to [`MAX_COORDINATE`]: a disk wider than the
+/// range would push its neighbours out of it.
+fn radius_ok(radius: f32) -> bool {
+    (0.0..=MAX_COORDINATE).contains(&radius)
 }
 
 /// Whether both coordinates are within ±[`MAX_COORDINATE`] (and so finite).
@@ -217,7 +222,7 @@ fn collect<N: Clone + Eq + Hash>(
                 position: node.position,
             });
         }
-        if !(node.radius.is_finite() && node.radius >= 0.0) {
+        if !radius_ok(node.radius) {
             report!(LayoutError::InvalidRadius {
                 node: node.id.clone(),
                 radius: node.radius,

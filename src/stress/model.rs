@@ -313,6 +313,85 @@ impl SparseStress {
     }
 }
 
+impl SparseStress {
+    /// Whether these terms can be the model of a graph of `n` nodes: every index in
+    /// range, every run where its start says, every weight finite and not negative, and
+    /// each component's size its count of nodes. What a snapshot's model is checked
+    /// against before the layout reads it; `Err` names the first part that disagrees.
+    pub(crate) fn check(&self, n: usize) -> Result<(), &'static str> {
+        let components = self.sizes.len();
+        let lengths = [self.component.len(), self.row.len(), self.near_scale.len()];
+        if lengths != [n; 3] || self.near_start.len() != n + 1 {
+            return Err("node counts");
+        }
+        let per_component = [self.pivot_range.len(), self.full.len(), self.stride.len()];
+        if per_component != [components; 3] || self.weight_start.len() != self.pivots.len() {
+            return Err("component counts");
+        }
+        let mut sizes = vec![0_u32; components];
+        for &c in &self.component {
+            *sizes.get_mut(c as usize).ok_or("component")? += 1;
+        }
+        if sizes != self.sizes {
+            return Err("sizes");
+        }
+        let mut end = 0;
+        for (c, &(a, b)) in self.pivot_range.iter().enumerate() {
+            let fits = a == end && a <= b && b as usize <= self.pivots.len();
+            let stride = self.stride[c] as usize;
+            if !fits || (b - a) as usize > self.sizes[c] as usize || stride == 0 {
+                return Err("pivot_range");
+            }
+            end = b;
+            // As `component_weights` reads them.
+            let at = |k: u32| self.weight_start.get(k as usize).map(|&s| s as usize);
+            let table = at(a).unwrap_or(0)..at(b).unwrap_or(self.weights.len());
+            if table.start > table.end || table.end > self.weights.len() {
+                return Err("weight_start");
+            }
+            if !self.full[c] && table.len() != (b - a) as usize * stride {
+                return Err("stride");
+            }
+        }
+        if end as usize != self.pivots.len() || self.pivots.iter().any(|&p| p as usize >= n) {
+            return Err("pivots");
+        }
+        if self.weight_start.windows(2).any(|w| w[0] >= w[1])
+            || self
+                .weight_start
+                .last()
+                .is_some_and(|&s| s as usize >= self.weights.len())
+        {
+            return Err("weight_start");
+        }
+        if !self.weights.iter().all(|w| w.is_finite() && *w >= 0.0) {
+            return Err("weights");
+        }
+        for (i, &c) in self.component.iter().enumerate() {
+            let (a, b) = self.pivot_range[c as usize];
+            let row = self.row[i] as usize;
+            if row + (b - a) as usize > self.hops.len() {
+                return Err("row");
+            }
+        }
+        let near = self.near.len();
+        if self.near_start[0] != 0
+            || self.near_start.windows(2).any(|w| w[0] > w[1])
+            || self.near_start[n] as usize != near
+            || self.near_hops.len() != near
+        {
+            return Err("near_start");
+        }
+        if self.near.iter().any(|&j| j as usize >= n) || self.near_hops.contains(&0) {
+            return Err("near");
+        }
+        if !self.near_scale.iter().all(|s| s.is_finite() && *s >= 0.0) {
+            return Err("near_scale");
+        }
+        Ok(())
+    }
+}
+
 /// A bounded breadth-first search's scratch: hops by node, reset after each search for
 /// the nodes it reached only.
 pub(crate) struct Reach {

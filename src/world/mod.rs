@@ -40,6 +40,7 @@ pub(crate) mod nodes;
 pub(crate) mod rapier_joint;
 mod recovery;
 pub(crate) mod saved;
+mod seal;
 pub(crate) mod slot;
 pub(crate) use slot::SlotsView;
 mod spring_scale;

@@ -18,15 +18,18 @@ use serde::{Deserialize, Serialize};
 
 use super::bindings::ColliderSpec;
 use super::events::{CollisionCollector, SceneEvent};
+use super::seal::seal_of;
 use super::slot::{HostSync, JointSlot, NodeSlot};
 use super::spring_scale::{SpringScale, StretchCache};
 use super::{RapierSceneWorld, WorldOptions};
-use crate::input::snapshot_error::SnapshotError;
+use crate::input::snapshot_error::{check_counters, SnapshotError};
 use crate::layout::IdHasher;
 
-/// Everything a world needs to continue where it was.
-#[derive(Clone, Serialize, Deserialize)]
-#[serde(bound(serialize = "N: Serialize", deserialize = "N: Deserialize<'de>"))]
+/// Everything a world needs to continue where it was. Written with the seals of
+/// rapier's sets (hashed as it is written: a snapshot kept in memory pays nothing for
+/// them), read back with the seals as written.
+#[derive(Clone, Deserialize)]
+#[serde(bound(deserialize = "N: Deserialize<'de>"))]
 pub(crate) struct SavedWorld<N> {
     bodies: RigidBodySet,
     colliders: ColliderSet,
@@ -55,6 +58,80 @@ pub(crate) struct SavedWorld<N> {
     contacts_enabled: bool,
     #[serde(default)]
     hop_length: Option<f32>,
+    /// Rapier's sets' seals as they were written (`seal.rs`). None in a format-1
+    /// snapshot, which the format check refuses before the seals are read, and in one
+    /// taken in this process.
+    #[serde(default)]
+    seals: Option<RapierSeals>,
+    /// Taken by [`RapierSceneWorld::save`] in this process and never written: rapier's
+    /// sets are the world's own, with nothing to check them against. Never read back.
+    #[serde(skip)]
+    taken_here: bool,
+}
+
+/// Writes every field as the derived `Deserialize` reads it, with the seals worked out
+/// now for a snapshot taken in this process.
+macro_rules! write_fields {
+    ($world:ident, $out:ident, $seals:ident: $($field:ident),*) => {{
+        let mut out = $out.serialize_struct("SavedWorld", [$(stringify!($field)),*].len() + 1)?;
+        $(out.serialize_field(stringify!($field), &$world.$field)?;)*
+        out.serialize_field("seals", &Some($seals))?;
+        out.end()
+    }};
+}
+
+impl<N: Serialize> Serialize for SavedWorld<N> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let seals = self.seals.unwrap_or_else(|| RapierSeals::of(self));
+        write_fields!(self, serializer, seals: bodies, colliders, impulse_joints,
+            multibody_joints, soft_bodies, islands, broad_phase, narrow_phase, ccd_solver,
+            params, slots, next_serial, joints, options, events, dropped_events, recovered,
+            topology_hash, spring_scale, joint_dt, version, spring_forces, touched,
+            ccd_off_once, contacts_enabled, hop_length)
+    }
+}
+
+/// One seal per rapier set ([`seal_of`]), in the order of [`SavedWorld`]'s fields.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+struct RapierSeals([u64; 10]);
+
+/// What each seal covers, for the error that names a broken one.
+const SEALED: [&str; 10] = [
+    "rapier's bodies",
+    "rapier's colliders",
+    "rapier's impulse joints",
+    "rapier's multibody joints",
+    "rapier's soft bodies",
+    "rapier's islands",
+    "rapier's broad phase",
+    "rapier's narrow phase",
+    "rapier's CCD solver",
+    "rapier's integration parameters",
+];
+
+impl RapierSeals {
+    fn of<N>(world: &SavedWorld<N>) -> Self {
+        Self([
+            seal_of(&world.bodies),
+            seal_of(&world.colliders),
+            seal_of(&world.impulse_joints),
+            seal_of(&world.multibody_joints),
+            seal_of(&world.soft_bodies),
+            seal_of(&world.islands),
+            seal_of(&world.broad_phase),
+            seal_of(&world.narrow_phase),
+            seal_of(&world.ccd_solver),
+            seal_of(&world.params),
+        ])
+    }
+
+    /// The first set whose seal `found` does not match.
+    fn broken(self, found: Self) -> Option<&'static str> {
+        (0..SEALED.len())
+            .find(|&k| self.0[k] != found.0[k])
+            .map(|k| SEALED[k])
+    }
 }
 
 impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
@@ -89,6 +166,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             ccd_off_once: self.ccd_off_once,
             contacts_enabled: self.contacts_enabled,
             hop_length: self.hop_length,
+            seals: None,
+            taken_here: true,
         }
     }
 
@@ -100,6 +179,21 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// [`SnapshotError::Inconsistent`] naming the first part that does not agree.
     pub(crate) fn from_saved(saved: SavedWorld<N>) -> Result<Self, SnapshotError> {
         let inconsistent = |what: &str| Err(SnapshotError::Inconsistent(what.to_owned()));
+        if !saved.taken_here {
+            let Some(seals) = saved.seals else {
+                return inconsistent("rapier's state is not sealed");
+            };
+            if let Some(part) = seals.broken(RapierSeals::of(&saved)) {
+                return Err(SnapshotError::Inconsistent(format!(
+                    "{part} differ from what rapier wrote (the snapshot was damaged, or written by another build of rapier)"
+                )));
+            }
+        }
+        check_counters(&[
+            (saved.next_serial, "world.next_serial"),
+            (saved.version, "world.version"),
+            (saved.dropped_events, "world.dropped_events"),
+        ])?;
         let mut index: HashMap<N, u32, IdHasher> =
             HashMap::with_capacity_and_hasher(saved.slots.len(), IdHasher::default());
         let mut colliders = 0;
@@ -144,8 +238,12 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
                 return inconsistent("a joint's key does not name its nodes");
             }
             if let Some(handle) = joint.handle {
-                if saved.impulse_joints.get(handle).is_none() {
+                let Some(rapier) = saved.impulse_joints.get(handle) else {
                     return inconsistent("a joint's rapier joint is missing");
+                };
+                let ends = [rapier.body1(), rapier.body2()];
+                if ends != [sa.body, sb.body] && ends != [sb.body, sa.body] {
+                    return inconsistent("a joint's rapier joint is between other bodies");
                 }
                 rapier_joints += 1;
             }

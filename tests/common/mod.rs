@@ -6,8 +6,8 @@ use std::hash::Hash;
 
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
-    CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, DeltaMap, Layout, LayoutExtras,
-    RapierLayout, RapierLayoutConfig, RapierLayoutState, SceneFile,
+    CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, DeltaMap, Layout, LayoutError,
+    LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState, SceneFile,
 };
 
 pub const FRAME: f32 = 1.0 / 60.0;
@@ -41,6 +41,20 @@ impl<N: Clone + Eq + Hash + std::fmt::Debug> Host<N> {
         );
         self.scene.apply_deltas(&deltas);
         deltas
+    }
+
+    /// One frame of `dt` seconds through `try_step`: the deltas, applied, or the error
+    /// that names the bad input (nothing applied).
+    pub fn try_frame(&mut self, dt: f32) -> Result<DeltaMap<N>, LayoutError<N>> {
+        let deltas = self.layout.try_step(
+            &self.scene,
+            &mut self.state,
+            dt,
+            &CanvasViewport::default(),
+            &self.extras,
+        )?;
+        self.scene.apply_deltas(&deltas);
+        Ok(deltas)
     }
 
     /// Runs frames until `is_converged`; returns how many it took. Panics, with the
@@ -149,4 +163,5 @@ pub fn nearest_and_farthest_from_centroid(scene: &CanvasSceneInput<u32>) -> (u32
     (nearest.id, farthest.id)
 }
 
+pub mod damage;
 pub mod session;

@@ -82,6 +82,39 @@ impl StressForce {
         self.since = 0;
     }
 
+    /// Whether a snapshot's force can be read as it is: its model the model of the
+    /// shape it was built for ([`SparseStress::check`]), the shape's joints between its
+    /// nodes, and the held pivot sums one a node and finite. A force whose shape is not
+    /// the world's is built again on its first substep, whatever its model holds; a
+    /// force with no shape holds no model. `Err` names the part.
+    pub(crate) fn check(&self) -> Result<(), String> {
+        if self.shape == Shape::default() {
+            return Ok(());
+        }
+        let n = self.shape.serials.len();
+        let within = |&(a, b): &(u32, u32)| (a as usize) < n && (b as usize) < n;
+        if !self.shape.joints.iter().all(within) {
+            return Err("forces.stress.shape.joints".into());
+        }
+        self.model
+            .check(n)
+            .map_err(|part| format!("forces.stress.model.{part}"))?;
+        let held = self.pivot_force.len();
+        if self.pivot_stiffness.len() != held || self.pivot_at.len() != held {
+            return Err("forces.stress: pivot sums of different lengths".into());
+        }
+        let finite = self.pivot_force.iter().all(|f| f.is_finite())
+            && self.pivot_stiffness.iter().all(|k| k.is_finite())
+            && self
+                .pivot_at
+                .iter()
+                .all(|p| p.x.is_finite() && p.y.is_finite());
+        if !finite {
+            return Err("forces.stress: pivot sums not finite".into());
+        }
+        Ok(())
+    }
+
     /// Works the pivot terms out afresh for every node on the next substep
     /// ([`prepare`](Self::prepare) and [`work_out`](Self::work_out)), instead of
     /// holding them: what a rest's balance is measured with, so that no node holds a pull worked out where the pivots were long

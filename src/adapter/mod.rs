@@ -223,11 +223,11 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// Under the `parallel` feature, whether another thread of the pool stays awake
     /// through each substep of a call when 2,048 bodies or more are awake: it takes the
     /// parallel parts as they come and yields its core between looks, where otherwise
-    /// it falls asleep between parts and takes 20 to 70 µs to wake for the next. A
-    /// `n10000_e25000` frame on two threads takes 5 to 12 % less time awake (see
-    /// `docs/performance.md`); the cost is that thread's core, busy through the serial
-    /// parts of the substeps too (rapier's step among them; it lets go after 2 ms
-    /// without work). The results are the same bits either way. Without the feature it
+    /// it falls asleep between parts and takes tens of microseconds to wake for the
+    /// next. A `n10000_e25000` frame on two threads takes less time with it awake
+    /// (`docs/performance.md` gives the figures); the cost is that thread's core, busy
+    /// through the serial parts of the substeps too (rapier's step among them; it lets
+    /// go after 2 ms without work). The results are the same bits either way. Without the feature it
     /// does nothing. [`LayoutWorker::set_pool_awake`](crate::LayoutWorker) passes it
     /// on to a worker's layout.
     ///

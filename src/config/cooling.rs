@@ -79,8 +79,9 @@ pub struct Cooling {
     /// mean edge near 7 times its rest length) is pulled together by its long springs
     /// as the layout cools, tighter than contacts can hold it. With the other
     /// [`force_directed`](crate::RapierLayoutConfig::force_directed) settings, 2 takes
-    /// `n10000_e25000` from 5,165 overlapping pairs at rest to 69 and its 95th-percentile
-    /// step from 31.5 to 19.6 ms (one session), for an edge-length CV of 0.50 against
+    /// `n10000_e25000` from thousands of overlapping pairs at rest to dozens and its
+    /// 95th-percentile step down by a third (`docs/performance.md`), for an edge-length
+    /// CV of 0.50 against
     /// 0.49 (d3-force: 0.50); `n1000_e2500` rests without overlaps either way. The six small shipped
     /// graphs stay below the limit (their CVs move in the third decimal at most). Costs one length per
     /// spring and a median at each re-tune. Has no effect at `spring_exponent` 1. Values
@@ -98,8 +99,8 @@ pub struct Cooling {
     /// overlap remains at rest. Later reheats (drags, edits) keep contacts firm, so a
     /// dragged node always pushes. With the other `force_directed()` settings (measured
     /// with two solver iterations and before [`stretch_limit`](Self::stretch_limit)),
-    /// 5 Hz took `n10000_e25000` from 60 to 45 ms per step and the CV of `n1000_e2500`
-    /// from 0.41 to 0.38; the six small graphs do not change. Costs nothing per step. Default: `None`
+    /// 5 Hz took a quarter off `n10000_e25000`'s step and the CV of `n1000_e2500` from
+    /// 0.41 to 0.38; the six small graphs do not change. Costs nothing per step. Default: `None`
     /// ([`RapierLayoutConfig::force_directed`](crate::RapierLayoutConfig::force_directed)
     /// uses 5 Hz).
     pub hot_contact_frequency: Option<f32>,
@@ -107,8 +108,8 @@ pub struct Cooling {
     /// falls to this (never below the floor); `None` keeps them from the start. A fresh
     /// scatter collapses under full-strength springs into thousands of overlapping
     /// pairs, which cost rapier's broad and narrow phases most of the step: on
-    /// `n10000_e25000`, 0.3 takes the first second from 343 to 18 ms per step and the
-    /// whole layout from 48 to 24 s. If the layout rests before, contacts come in then.
+    /// `n10000_e25000`, 0.3 makes the first second's steps many times cheaper and the
+    /// whole layout twice as fast (`docs/performance.md`). If the layout rests before, contacts come in then.
     /// Later reheats (drags, edits, topology changes) keep contacts on, so an interaction
     /// never lets nodes pass through each other. The trade: a graph that starts without
     /// contacts untangles differently; with the other `force_directed()` settings,

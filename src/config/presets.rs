@@ -66,10 +66,9 @@ impl RapierLayoutConfig {
     /// Every shipped graph comes to rest (every body asleep, or halted at the end of the
     /// schedule) within 300 frames of the last disturbance, with no overlapping pair on
     /// the graphs of up to 1,000 nodes (`docs/quality.md`: edge-length spread, frames and step
-    /// times beside d3-force's). On `n10000_e25000` a step takes 11.75 ms at the median
-    /// and 15.55 ms at the 95th percentile, about a tenth of d3-force's tick in the same
-    /// session (`docs/performance.md`); [`force_directed_fast`](Self::force_directed_fast)
-    /// takes 5.87 ms without collisions.
+    /// times beside d3-force's). On `n10000_e25000` a step takes about a tenth of
+    /// d3-force's tick, and [`force_directed_fast`](Self::force_directed_fast) half of
+    /// this preset's, without collisions (`docs/performance.md` gives the times).
     ///
     /// # Example
     /// ```
@@ -123,9 +122,9 @@ impl RapierLayoutConfig {
     /// Repulsion alone keeps nodes apart, so some overlap where springs pull hard (833
     /// pairs on `n1000_e2500`; d3-force leaves 347); the stiffer hub springs and the
     /// bias of `force_directed()` would press twice as many together without contacts.
-    /// In exchange there is no pair search: measured on `n10000_e25000`
-    /// (`docs/performance.md`), 5.87 ms per step at the median and 7.75 ms at the 95th
-    /// percentile, where `force_directed()` takes 11.75 and 15.55 ms. Its springs, fading
+    /// In exchange there is no pair search: on `n10000_e25000` a step takes half of
+    /// `force_directed()`'s, at the median and the 95th percentile
+    /// (`docs/performance.md`). Its springs, fading
     /// with the heat, are weak once the layout rests, so a thrown node's springs pull with 5 % of their
     /// strength ([`Cooling::coasting_spring_scale`]) to bring it back.
     ///

@@ -22,9 +22,8 @@ pub enum Accuracy {
     #[default]
     Balanced,
     /// 8 solver iterations, 2 internal PGS iterations and 2 substeps per timestep:
-    /// 8× the solver work of `Balanced` (6× the step time measured in
-    /// `docs/tradeoff.md`) for the stiffest constraints and the most faithful
-    /// trajectories.
+    /// 8× the solver work of `Balanced` (`docs/tradeoff.md` times it) for the stiffest
+    /// constraints and the most faithful trajectories.
     Precise,
     /// Explicit settings.
     Custom {
@@ -193,11 +192,11 @@ pub enum ContactModel {
     /// world, the overlaps still held are projected apart on positions first. No
     /// colliders exist in rapier, so its broad and narrow phases have nothing to do:
     /// with the other [`force_directed`](crate::RapierLayoutConfig::force_directed)
-    /// settings, `n10000_e25000` steps in 17.0 ms at the median and 19.6 at the 95th
-    /// percentile, against 49.3 and 62.4 ms with rapier's contacts (one session), and
-    /// rests with 69 overlapping pairs against 89. Disks and label boxes
-    /// ([`NodeShape`](crate::NodeShape)) are parted by their outlines (a box with boxes
-    /// costs 1.42 × a disk with disks on that graph, `docs/shapes.md`). The trade: no
+    /// settings, `n10000_e25000` steps in about a third of the time it takes with
+    /// rapier's contacts, and rests with fewer overlapping pairs (`docs/performance.md`).
+    /// Disks and label boxes ([`NodeShape`](crate::NodeShape)) are parted by their
+    /// outlines (a box with boxes costs more than a disk with disks, `docs/shapes.md`).
+    /// The trade: no
     /// friction, restitution or contact events (with
     /// [`RapierLayoutConfig::contact_events`](crate::RapierLayoutConfig::contact_events)
     /// on, contacts are rapier's), and contacts are not solved together with rapier

@@ -89,9 +89,9 @@ pub struct StressModel {
     /// The pivot terms are worked out every this many substeps and held in between as
     /// their first-order model (the force less their stiffness times the way moved since),
     /// while the exact terms and edges are worked out every substep. Far pairs change
-    /// slowly: 4 takes `n10000_e25000`'s step from 17 to 7 ms at the median with the
-    /// same stress at rest (`docs/quality.md`); longer periods lag a fast node's far
-    /// pulls more. Default: `4`.
+    /// slowly: 4 takes well over half of the step's time off `n10000_e25000` with the
+    /// same stress at rest (`docs/quality.md` has the figures and the command); longer
+    /// periods lag a fast node's far pulls more. Default: `4`.
     pub pivot_period: u32,
 }
 

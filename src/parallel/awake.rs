@@ -1,10 +1,10 @@
 //! Another thread of the pool kept awake through a substep (under `parallel`), so the
 //! substep's parallel parts do not wait for it to wake.
 //!
-//! A rayon thread with no work spins a little and then sleeps; asleep, it takes 20 to
-//! 70 µs to wake (on this project's 2-core virtual machine), and a substep of 10,000
-//! bodies holds some twenty parallel parts of tens of µs each, with serial work between
-//! them. So [`with_pool_awake`] hands the pool one job that takes the pool's work as it
+//! A rayon thread with no work spins a little and then sleeps; asleep, it takes tens of
+//! microseconds to wake, about as long as each of the twenty or so parallel parts of a
+//! substep of 10,000 bodies, with serial work between them (`docs/performance.md`,
+//! the parallel feature, gives the figures). So [`with_pool_awake`] hands the pool one job that takes the pool's work as it
 //! comes ([`rayon::yield_now`]) and yields its core to the system between looks, until
 //! the substep ends. Which thread takes which part changes no result.
 //!

@@ -71,7 +71,7 @@ impl<N> Default for LayoutFrame<N> {
 /// thread.
 ///
 /// The trade: a step slower than `frame_time` (a graph of 100,000 nodes under
-/// [`stress`](RapierLayoutConfig::stress) takes about 200 ms) runs the layout in slow
+/// [`stress`](RapierLayoutConfig::stress), `docs/performance.md`) runs the layout in slow
 /// motion instead of simulating the lost time in the next step, whose substeps would
 /// make it slower still. The host keeps its frame rate and sees a new frame after
 /// every step; a node let go in slow motion is thrown with the pointer's last move over
@@ -350,7 +350,8 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
 
     /// Whether another thread of the worker's pool stays awake through a step's
     /// substeps, as [`RapierLayout::set_pool_awake`] says (default: on). A pool of one
-    /// thread, the default on a 2-core machine, has no other thread to keep awake.
+    /// thread (the default where the machine has two cores) has no other thread to keep
+    /// awake.
     pub fn set_pool_awake(&mut self, on: bool) {
         self.send(Command::PoolAwake(on));
     }
@@ -366,9 +367,8 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
 
 impl<N: Clone + Eq + Hash + Send + Sync + 'static> Drop for LayoutWorker<N> {
     /// Stops the worker and joins its thread: it returns at once while it rests or waits
-    /// for its next frame, and after the step in progress otherwise (about 200 ms for
-    /// 100,000 nodes under [`stress`](RapierLayoutConfig::stress)): the one call
-    /// that waits for a step.
+    /// for its next frame, and after the step in progress otherwise: the one call that
+    /// waits for a step.
     fn drop(&mut self) {
         self.commands = None;
         if let Some(thread) = self.thread.take() {

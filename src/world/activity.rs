@@ -103,7 +103,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// `kept`: every body's position and whether it is a sleeping dynamic body, by slot,
     /// as the layout keeps them (exact for every body the world has not reported
     /// changed since), read instead of rapier's bodies: at 100,000 bodies, reading each
-    /// from rapier took milliseconds a dragged frame.
+    /// from rapier is a cache miss a body, every dragged frame.
     pub(crate) fn wake_bodies_near_sweep(
         &mut self,
         slot: usize,

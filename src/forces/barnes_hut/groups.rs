@@ -11,9 +11,8 @@ use crate::parallel;
 
 /// Most points that share one walk in [`ManyBody::forces`]: larger groups walk the tree
 /// less often but sum longer lists. 64 was the fastest of 8 to 256 on `n10000_e25000`
-/// and the 100,000-node generated graph with a sum of one point a pass; with two a pass
-/// (now), 128 and 256 take 1.95 and 2.7 ms a pass at n = 10,000 where 64 takes 1.8, and
-/// 32 is within the machine's noise of 64.
+/// and the 100,000-node generated graph (`cargo bench --bench many_body`;
+/// `docs/performance.md`), with 32 as fast within the noise.
 const GROUP_SIZE: usize = 64;
 /// Independent partial sums per force, so the sum runs in vector registers.
 const LANES: usize = 8;
@@ -34,8 +33,7 @@ impl ManyBody {
     /// the cells holding a member and leaves never are. So the pass opens at least the
     /// cells `force_on` opens and its mean error is no larger (on `n10000_e25000` at
     /// theta 0.9, 0.59 % against 0.83 %; single points can land either side), theta 0 is
-    /// still the exact sum, and on `n10000_e25000` at theta 0.9 a build and a pass take
-    /// 1.8–1.9 ms (`docs/performance.md`).
+    /// still the exact sum (`docs/performance.md` times a build and a pass).
     ///
     /// # Example
     /// ```

@@ -12,8 +12,9 @@ use std::time::Duration;
 
 use common::*;
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use graph_canvas_layout::config::Repulsion;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
-use graph_canvas_layout::{ManyBody, Repulsion};
+use graph_canvas_layout::ManyBody;
 
 /// The mean relative error of `forces` against the exact sum on 16 points spread over
 /// the scene: docs/performance.md gives 0.56-0.59 % at theta 0.9 for these sizes, so 2 % is

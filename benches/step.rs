@@ -16,7 +16,8 @@ use std::time::{Duration, Instant};
 
 use common::*;
 use criterion::{black_box, criterion_group, criterion_main, Criterion, SamplingMode};
-use graph_canvas_layout::{Accuracy, Layout, RapierLayoutConfig};
+use graph_canvas_layout::config::Accuracy;
+use graph_canvas_layout::{Layout, RapierLayoutConfig};
 
 const WARM: usize = 30;
 const CHUNK: u64 = 240;
@@ -208,7 +209,7 @@ fn topology_check(c: &mut Criterion) {
         b.iter(|| assert!(!host.layout.topology_changed(black_box(&shuffled), &extras)))
     });
     c.bench_function("topology_hash/n200_e500", |b| {
-        b.iter(|| graph_canvas_layout::topology_hash(black_box(&scene), &extras))
+        b.iter(|| graph_canvas_layout::scene::topology_hash(black_box(&scene), &extras))
     });
 }
 

@@ -8,7 +8,8 @@ use std::time::Duration;
 
 use common::*;
 use criterion::{black_box, criterion_group, criterion_main, BatchSize, Criterion};
-use graph_canvas_layout::{RapierLayoutConfig, TopologyUpdate};
+use graph_canvas_layout::config::TopologyUpdate;
+use graph_canvas_layout::RapierLayoutConfig;
 
 fn ready(name: &str, mode: TopologyUpdate) -> Host {
     let mut host = Host::new(

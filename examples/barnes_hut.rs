@@ -6,8 +6,10 @@
 
 use std::time::Instant;
 
+use graph_canvas_layout::config::Repulsion;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
-use graph_canvas_layout::{ManyBody, Repulsion, SceneFile};
+use graph_canvas_layout::scene::SceneFile;
+use graph_canvas_layout::ManyBody;
 
 /// One force pass as the layout runs it: build, then every point's force.
 fn forces(tree: &mut ManyBody, points: &[Point2D<f32>], theta: f32) -> Vec<Vector2D<f32>> {

@@ -19,7 +19,8 @@ use std::time::{Duration, Instant};
 
 use common::percentile;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
-use graph_canvas_layout::{quality, LayoutWorker, RapierLayoutConfig};
+use graph_canvas_layout::worker::LayoutWorker;
+use graph_canvas_layout::{quality, RapierLayoutConfig};
 
 const FRAME: Duration = Duration::from_micros(16_667);
 

@@ -8,10 +8,11 @@
 
 use std::hash::Hasher;
 
+use graph_canvas_layout::config::TopologyUpdate;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
     BodyKindPolicy, CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, EdgeJoint, Layout,
-    LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState, TopologyUpdate,
+    LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState,
 };
 
 mod common;

@@ -18,7 +18,8 @@ use common::svg::{svg, Guide, BLUE, PALETTE};
 use common::Host;
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::quality::hop_distances;
-use graph_canvas_layout::{AxisLock, NodeForces, RapierLayoutConfig};
+use graph_canvas_layout::scene::AxisLock;
+use graph_canvas_layout::{NodeForces, RapierLayoutConfig};
 
 const FRAME: f32 = 1.0 / 60.0;
 

@@ -8,9 +8,10 @@ mod common;
 
 use common::svg::{svg, BLUE};
 use graph_canvas_layout::euclid::default::Vector2D;
+use graph_canvas_layout::scene::SceneFile;
 use graph_canvas_layout::{
     CanvasSceneInput, CanvasViewport, Layout, LayoutExtras, RapierLayout, RapierLayoutConfig,
-    RapierLayoutState, SceneFile,
+    RapierLayoutState,
 };
 
 const FRAME: f32 = 1.0 / 60.0;

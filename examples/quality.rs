@@ -29,9 +29,11 @@
 
 use std::time::Instant;
 
+use graph_canvas_layout::config::Accuracy;
+use graph_canvas_layout::scene::{SceneFile, SceneFileNode};
 use graph_canvas_layout::{
-    quality, Accuracy, CanvasSceneInput, CanvasViewport, Layout, LayoutExtras, RapierLayout,
-    RapierLayoutConfig, RapierLayoutState, SceneFile, SceneFileNode,
+    quality, CanvasSceneInput, CanvasViewport, Layout, LayoutExtras, RapierLayout,
+    RapierLayoutConfig, RapierLayoutState,
 };
 
 mod common;
@@ -107,8 +109,8 @@ fn leave_out(config: &mut RapierLayoutConfig, setting: &str) {
         "hot_contact_frequency" => cooling.hot_contact_frequency = None,
         "stretch_limit" => cooling.stretch_limit = None,
         "accuracy" => config.accuracy = Accuracy::Balanced,
-        "contact_model" => config.contact_model = graph_canvas_layout::ContactModel::Rapier,
-        "spring_model" => config.spring_model = graph_canvas_layout::SpringModel::Joints,
+        "contact_model" => config.contact_model = graph_canvas_layout::config::ContactModel::Rapier,
+        "spring_model" => config.spring_model = graph_canvas_layout::config::SpringModel::Joints,
         "reheat_hops" => cooling.reheat_hops = None,
         "flight_damping" => config.flight_damping = None,
         other => panic!(
@@ -218,8 +220,10 @@ fn main() {
     while let Some(arg) = rest.next() {
         match arg.as_str() {
             "--fast" | "--default" => {}
-            "--spring-forces" => config.spring_model = graph_canvas_layout::SpringModel::Forces,
-            "--disks" => config.contact_model = graph_canvas_layout::ContactModel::Disks,
+            "--spring-forces" => {
+                config.spring_model = graph_canvas_layout::config::SpringModel::Forces
+            }
+            "--disks" => config.contact_model = graph_canvas_layout::config::ContactModel::Disks,
             "--starts" => {
                 starts = rest
                     .next()

@@ -15,7 +15,8 @@
 
 use std::time::Instant;
 
-use graph_canvas_layout::{quality, Layout, RapierLayoutConfig, StressModel, StressStart};
+use graph_canvas_layout::config::{StressModel, StressStart};
+use graph_canvas_layout::{quality, Layout, RapierLayoutConfig};
 
 mod common;
 

@@ -22,7 +22,8 @@ use std::hash::Hasher;
 use std::time::{Duration, Instant};
 
 use common::*;
-use graph_canvas_layout::{RapierLayoutConfig, StepProfile};
+use graph_canvas_layout::profile::StepProfile;
+use graph_canvas_layout::RapierLayoutConfig;
 
 const WARM: usize = 30;
 

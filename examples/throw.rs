@@ -9,9 +9,10 @@
 use std::time::Instant;
 
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
+use graph_canvas_layout::scene::SceneFile;
 use graph_canvas_layout::{
     CanvasSceneInput, CanvasViewport, DeltaMap, Layout, LayoutExtras, RapierLayout,
-    RapierLayoutState, SceneFile,
+    RapierLayoutState,
 };
 
 const FRAME: f32 = 1.0 / 60.0;

@@ -15,9 +15,10 @@ use std::collections::HashMap;
 use std::fmt::Write as _;
 use std::time::Instant;
 
+use graph_canvas_layout::config::Accuracy;
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::{
-    Accuracy, CanvasSceneInput, CanvasViewport, EdgeJoint, Layout, LayoutExtras, RapierLayout,
+    CanvasSceneInput, CanvasViewport, EdgeJoint, Layout, LayoutExtras, RapierLayout,
     RapierLayoutConfig, RapierLayoutState,
 };
 

@@ -48,7 +48,7 @@
 //! - A free node the host moved itself (undo, snap) is put where the host put it.
 //! - [`RapierLayout::try_step`] rejects bad input with a [`LayoutError`] and changes
 //!   nothing; [`Layout::step`] leaves bad elements out and never panics.
-//! - [`LayoutWorker`] steps a layout on a thread of its own for graphs whose step would
+//! - [`LayoutWorker`](crate::worker::LayoutWorker) steps a layout on a thread of its own for graphs whose step would
 //!   cost the UI thread its frame rate: the host sends what changes and reads the
 //!   newest positions without waiting.
 //!
@@ -75,7 +75,7 @@
 //!   contacts or joints, rapier decides (see `docs/performance.md`). `step` runs on the
 //!   pool of the thread that calls it: rayon's global pool, or a pool of the host's own
 //!   (`rayon::ThreadPool::install`, with rayon among the host's dependencies). A
-//!   [`LayoutWorker`] steps on a pool of its own with one thread fewer than the
+//!   [`LayoutWorker`](crate::worker::LayoutWorker) steps on a pool of its own with one thread fewer than the
 //!   machine has cores, so the UI thread keeps a core
 //!   (`LayoutWorker::spawn_on_threads` chooses the count). From 2,048 awake bodies on,
 //!   another thread of the pool stays awake through each substep of a call, taking its
@@ -117,7 +117,7 @@
 //! 5 units/s (`0.05 × length_unit`) for 0.5 s to sleep and they stop exactly,
 //! [`Layout::is_converged`] waits for that, and displacements under
 //! [`RapierLayoutConfig::delta_epsilon`] are not reported. Dense piles of disks pushed
-//! together by springs settle more slowly; [`Accuracy::Precise`] resolves their
+//! together by springs settle more slowly; [`Accuracy::Precise`](crate::config::Accuracy::Precise) resolves their
 //! contacts in fewer frames, and the layout presets keep nodes apart in the first place.
 //!
 //! **Very large coordinates?** Positions are `f32`: near 1e5 they resolve to 0.008 units,
@@ -135,9 +135,9 @@
 //! preset cools to rest, then stops stepping the world until the next drag, release,
 //! host move or edit, which heats only the nodes near it.
 //!
-//! **Which accuracy level?** Independent of the preset: [`Accuracy::Balanced`] (default)
-//! sits at the knee of the measured cost/error curve. [`Accuracy::Fast`] is cheaper on
-//! sparse graphs but slower in dense contact piles; [`Accuracy::Precise`] costs several
+//! **Which accuracy level?** Independent of the preset: [`Accuracy::Balanced`](crate::config::Accuracy::Balanced) (default)
+//! sits at the knee of the measured cost/error curve. [`Accuracy::Fast`](crate::config::Accuracy::Fast) is cheaper on
+//! sparse graphs but slower in dense contact piles; [`Accuracy::Precise`](crate::config::Accuracy::Precise) costs several
 //! times as much for trajectories and spring lengths closer to a fine-timestep
 //! reference (`docs/tradeoff.md`, `cargo run --release --example tradeoff`).
 //!
@@ -150,64 +150,87 @@
 //!
 //! **Nodes pass through each other right after loading?** Under the layout presets,
 //! contacts join the first unfolding once it has cooled to
-//! [`Cooling::first_contact_heat`] (0.3: about 0.35 s under `stress()`, 0.8 s under
+//! [`Cooling::first_contact_heat`](crate::config::Cooling::first_contact_heat) (0.3: about 0.35 s under `stress()`, 0.8 s under
 //! `force_directed()`): a fresh start moving fast through thousands of contact pairs
 //! would cost most of the step. Set it to `None` for contacts from the first frame.
 //!
 //! **Where does a frame's time go?** [`RapierLayout::set_profiling`] and
-//! [`RapierLayout::profile`]: a [`StepProfile`] splits the calls' time into the layout's
+//! [`RapierLayout::profile`]: a [`StepProfile`](crate::profile::StepProfile) splits the calls' time into the layout's
 //! own forces, its contacts, rapier's step and the rest of the call (matching, sync,
 //! deltas). Off by default; then a call reads no clock.
 #![deny(missing_docs)]
 
 mod adapter;
-mod config;
+pub mod config;
 mod forces;
 mod input;
 mod layout;
 mod parallel;
-mod profile;
+pub mod profile;
 pub mod quality;
 mod sanitize;
 mod stress;
 mod timestep;
-mod worker;
-mod world;
+pub mod worker;
+pub mod world;
 
 pub use euclid;
 #[cfg(feature = "petgraph")]
 pub use petgraph;
 pub use rapier2d;
 
-pub use adapter::{LayoutSnapshot, RapierLayout, RapierLayoutState, REST_TIME};
-pub use config::cooling::Cooling;
-pub use config::{
-    Accuracy, BodyKindPolicy, ContactModel, ContactSoftness, EdgeJoint, EdgeWeight, GroupForce,
-    RapierLayoutConfig, SolverSettings, SpringModel, StressModel, StressStart, TopologyUpdate,
-};
-pub use forces::barnes_hut::ManyBody;
-pub use forces::many_body::Repulsion;
-pub use input::node_forces::{AxisLock, AxisTarget, NodeForces, RingTarget};
-#[cfg(feature = "petgraph")]
-pub use input::petgraph::{spiral_position, NodeStart, SPIRAL_SPACING};
+// The contract (`Layout`, the scene, the Rapier layout and its world's types) and the
+// errors and snapshots a host meets; the rest lives in the modules below.
+pub use adapter::{LayoutSnapshot, RapierLayout, RapierLayoutState};
+pub use config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig};
+pub use input::node_forces::NodeForces;
 pub use input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
-pub use input::scene_file::{SceneFile, SceneFileNode};
 pub use input::shape::NodeShape;
 pub use input::snapshot_error::SnapshotError;
-pub use input::topology::topology_hash;
 pub use input::validation::{LayoutError, MAX_COORDINATE};
-pub use layout::{DeltaMap, IdHasher, Layout, LayoutExtras, NodeMap, NodeSet};
-pub use profile::StepProfile;
-pub use timestep::{StepPlan, DEFAULT_TIMESTEP, MIN_TIMESTEP};
-pub use worker::{LayoutFrame, LayoutWorker};
+pub use layout::{DeltaMap, Layout, LayoutExtras, NodeMap, NodeSet};
 pub use world::bindings::{
     ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot, PhysicsMaterial, SceneBodyKind,
 };
 pub use world::events::SceneEvent;
-pub use world::rapier_joint::max_resolved_stiffness;
-pub use world::{
-    RapierSceneWorld, WorldOptions, MAX_PENDING_EVENTS, MIN_BODY_MASS, POSITION_EPSILON,
-};
+pub use world::RapierSceneWorld;
+
+/// What a host's scene is made of beyond the nodes and edges: per-node forces' parts,
+/// the shipped scene files, the topology hash and, with feature `petgraph`, where a
+/// graph without positions starts.
+pub mod scene {
+    pub use crate::input::node_forces::{AxisLock, AxisTarget, NodeForces, RingTarget};
+    #[cfg(feature = "petgraph")]
+    pub use crate::input::petgraph::NodeStart;
+    pub use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
+    pub use crate::input::scene_file::{SceneFile, SceneFileNode};
+    pub use crate::input::shape::NodeShape;
+    pub use crate::input::topology::topology_hash;
+    pub use crate::input::validation::MAX_COORDINATE;
+}
+
+/// The names a host imports for the usual loop: `use graph_canvas_layout::prelude::*;`.
+/// The [`Layout`] trait comes in unnamed (its methods in scope, its name free for
+/// egui_graphs' `Layout` or a host's own).
+pub mod prelude {
+    pub use crate::Layout as _;
+    pub use crate::{
+        CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, DeltaMap, LayoutError,
+        LayoutExtras, LayoutSnapshot, NodeForces, NodeShape, RapierLayout, RapierLayoutConfig,
+        RapierLayoutState, SnapshotError,
+    };
+}
+
+// Plumbing the crate's own tests, examples and benches reach for: not part of the API.
+#[doc(hidden)]
+pub use forces::barnes_hut::ManyBody;
+#[doc(hidden)]
+#[cfg(feature = "petgraph")]
+pub use input::petgraph::{spiral_position, SPIRAL_SPACING};
+#[doc(hidden)]
+pub use layout::IdHasher;
+#[doc(hidden)]
+pub use timestep::{StepPlan, DEFAULT_TIMESTEP, MIN_TIMESTEP};
 
 /// The README's examples run as doctests.
 #[cfg(doctest)]

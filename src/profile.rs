@@ -46,7 +46,7 @@ pub struct StepProfile {
     /// The layout's own forces: repulsion (Barnes–Hut), springs applied as forces, the
     /// stress model's terms, the host's per-node forces, centring and groups.
     pub forces: Duration,
-    /// The layout's own contacts ([`ContactModel::Disks`](crate::ContactModel)): the
+    /// The layout's own contacts ([`ContactModel::Disks`](crate::config::ContactModel)): the
     /// pairs found and solved before rapier's step, and relaxed after it.
     pub contacts: Duration,
     /// rapier's own steps (integration, and its contacts and joints where the

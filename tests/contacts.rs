@@ -3,10 +3,9 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::ContactModel;
 use graph_canvas_layout::euclid::default::Point2D;
-use graph_canvas_layout::{
-    CanvasSceneInput, ContactModel, EdgeJoint, RapierLayoutConfig, SceneEvent,
-};
+use graph_canvas_layout::{CanvasSceneInput, EdgeJoint, RapierLayoutConfig, SceneEvent};
 
 #[test]
 fn overlapping_disks_are_pushed_apart() {

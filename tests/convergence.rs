@@ -4,8 +4,9 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::TopologyUpdate;
 use graph_canvas_layout::euclid::default::Point2D;
-use graph_canvas_layout::{CanvasSceneInput, Layout, RapierLayoutConfig, TopologyUpdate};
+use graph_canvas_layout::{CanvasSceneInput, Layout, RapierLayoutConfig};
 
 #[test]
 fn not_converged_before_a_world_exists() {

@@ -4,8 +4,9 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::SpringModel;
 use graph_canvas_layout::euclid::default::Point2D;
-use graph_canvas_layout::{CanvasSceneInput, EdgeJoint, RapierLayoutConfig, SpringModel};
+use graph_canvas_layout::{CanvasSceneInput, EdgeJoint, RapierLayoutConfig};
 
 fn config(joint: EdgeJoint) -> RapierLayoutConfig {
     // Collisions off so only the joint acts between the two disks.

@@ -5,11 +5,13 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::SpringModel;
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::quality::hop_distances;
+use graph_canvas_layout::scene::AxisLock;
 use graph_canvas_layout::{
-    AxisLock, CanvasSceneInput, CanvasViewport, Layout, LayoutError, LayoutExtras, NodeForces,
-    RapierLayoutConfig, RapierLayoutState, SpringModel,
+    CanvasSceneInput, CanvasViewport, Layout, LayoutError, LayoutExtras, NodeForces,
+    RapierLayoutConfig, RapierLayoutState,
 };
 
 fn host(name: &str) -> Host<u32> {

@@ -121,7 +121,8 @@ fn rapiers_contacts_give_the_same_bits_on_the_same_pool() {
 #[test]
 fn a_worker_on_a_pool_of_its_own_lays_a_ring_out() {
     use graph_canvas_layout::euclid::default::Point2D;
-    use graph_canvas_layout::{CanvasEdge, CanvasNode, CanvasSceneInput, LayoutWorker};
+    use graph_canvas_layout::worker::LayoutWorker;
+    use graph_canvas_layout::{CanvasEdge, CanvasNode, CanvasSceneInput};
     let scene = CanvasSceneInput::new(
         (0..12)
             .map(|i| CanvasNode::new(i, Point2D::new(i as f32, 0.0)))

@@ -5,10 +5,11 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::TopologyUpdate;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
     CanvasSceneInput, EdgeJoint, NodeAvatarBinding, NodeSnapshot, RapierLayoutConfig,
-    RapierSceneWorld, TopologyUpdate,
+    RapierSceneWorld,
 };
 
 fn no_damping() -> RapierLayoutConfig {

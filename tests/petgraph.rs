@@ -10,9 +10,8 @@ use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::petgraph::graphmap::UnGraphMap;
 use graph_canvas_layout::petgraph::stable_graph::StableGraph;
 use graph_canvas_layout::petgraph::Graph;
-use graph_canvas_layout::{
-    spiral_position, CanvasSceneInput, NodeStart, RapierLayoutConfig, SPIRAL_SPACING,
-};
+use graph_canvas_layout::scene::NodeStart;
+use graph_canvas_layout::{spiral_position, CanvasSceneInput, RapierLayoutConfig, SPIRAL_SPACING};
 
 #[test]
 fn every_petgraph_graph_kind_becomes_a_scene_with_its_own_ids() {

@@ -10,8 +10,9 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::Cooling;
 use graph_canvas_layout::euclid::default::Point2D;
-use graph_canvas_layout::{quality, Cooling, Layout, RapierLayoutConfig};
+use graph_canvas_layout::{quality, Layout, RapierLayoutConfig};
 
 #[test]
 fn a_cooled_layout_that_was_still_moving_stops_and_stays_stopped() {

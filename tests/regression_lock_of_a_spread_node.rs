@@ -7,7 +7,8 @@
 mod common;
 
 use common::*;
-use graph_canvas_layout::{AxisLock, CanvasSceneInput, NodeForces, RapierLayoutConfig};
+use graph_canvas_layout::scene::AxisLock;
+use graph_canvas_layout::{CanvasSceneInput, NodeForces, RapierLayoutConfig};
 
 #[test]
 fn a_node_locked_as_it_is_added_keeps_the_hosts_coordinate() {

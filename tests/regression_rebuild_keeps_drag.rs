@@ -5,8 +5,9 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::TopologyUpdate;
 use graph_canvas_layout::euclid::default::Point2D;
-use graph_canvas_layout::{CanvasSceneInput, RapierLayoutConfig, TopologyUpdate};
+use graph_canvas_layout::{CanvasSceneInput, RapierLayoutConfig};
 
 #[test]
 fn a_rebuild_mid_drag_keeps_the_throw() {

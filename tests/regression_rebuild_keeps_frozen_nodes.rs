@@ -6,8 +6,9 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::TopologyUpdate;
 use graph_canvas_layout::euclid::default::Point2D;
-use graph_canvas_layout::{CanvasSceneInput, RapierLayoutConfig, TopologyUpdate};
+use graph_canvas_layout::{CanvasSceneInput, RapierLayoutConfig};
 
 #[test]
 fn a_rebuild_keeps_a_node_whose_position_is_nan() {

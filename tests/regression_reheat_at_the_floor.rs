@@ -7,8 +7,9 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::Cooling;
 use graph_canvas_layout::euclid::default::Vector2D;
-use graph_canvas_layout::{Cooling, Layout, PhysicsMaterial, RapierLayoutConfig};
+use graph_canvas_layout::{Layout, PhysicsMaterial, RapierLayoutConfig};
 
 #[test]
 fn a_throw_flies_even_when_a_reheat_cannot_lift_the_heat() {

@@ -7,7 +7,8 @@
 mod common;
 
 use common::damage::{host_mid_drag, restore_and_run, Damage, Outcome};
-use graph_canvas_layout::{Accuracy, RapierLayoutConfig, SolverSettings};
+use graph_canvas_layout::config::{Accuracy, SolverSettings};
+use graph_canvas_layout::RapierLayoutConfig;
 use serde_json::Value;
 
 #[test]

@@ -4,9 +4,10 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::Repulsion;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::{
-    quality, CanvasSceneInput, Layout, ManyBody, PhysicsMaterial, RapierLayoutConfig, Repulsion,
+    quality, CanvasSceneInput, Layout, ManyBody, PhysicsMaterial, RapierLayoutConfig,
 };
 
 fn scene_points(name: &str) -> Vec<Point2D<f32>> {

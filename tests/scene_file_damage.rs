@@ -9,7 +9,8 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use common::damage::damages;
 use common::{Host, FRAME};
-use graph_canvas_layout::{LayoutError, RapierLayoutConfig, SceneFile};
+use graph_canvas_layout::scene::SceneFile;
+use graph_canvas_layout::{LayoutError, RapierLayoutConfig};
 
 /// What reading one damaged file came to.
 #[derive(Debug, PartialEq, Eq, PartialOrd, Ord)]

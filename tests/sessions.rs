@@ -10,7 +10,9 @@ mod common;
 
 use common::session::{run, run_resuming, Action};
 use common::FRAME;
-use graph_canvas_layout::{AxisLock, EdgeJoint, NodeForces, RapierLayoutConfig, TopologyUpdate};
+use graph_canvas_layout::config::TopologyUpdate;
+use graph_canvas_layout::scene::AxisLock;
+use graph_canvas_layout::{EdgeJoint, NodeForces, RapierLayoutConfig};
 use proptest::prelude::*;
 
 const IDS: u32 = 12;

@@ -10,9 +10,10 @@ mod generate;
 
 use common::*;
 use generate::label_boxes;
+use graph_canvas_layout::config::ContactModel;
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::{
-    quality, CanvasNode, CanvasSceneInput, ContactModel, EdgeJoint, LayoutError, RapierLayoutConfig,
+    quality, CanvasNode, CanvasSceneInput, EdgeJoint, LayoutError, RapierLayoutConfig,
 };
 
 /// A pair overlaps when each is more than this inside the other on both axes (world

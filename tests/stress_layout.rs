@@ -6,10 +6,9 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::{StressModel, StressStart};
 use graph_canvas_layout::euclid::default::{Box2D, Point2D};
-use graph_canvas_layout::{
-    quality, CanvasSceneInput, RapierLayoutConfig, StressModel, StressStart,
-};
+use graph_canvas_layout::{quality, CanvasSceneInput, RapierLayoutConfig};
 
 fn stress_with(model: StressModel) -> RapierLayoutConfig {
     RapierLayoutConfig {

@@ -5,9 +5,9 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::{EdgeWeight, SpringModel};
 use graph_canvas_layout::{
-    CanvasSceneInput, CanvasViewport, EdgeJoint, EdgeWeight, LayoutError, RapierLayoutConfig,
-    RapierLayoutState, SpringModel,
+    CanvasSceneInput, CanvasViewport, EdgeJoint, LayoutError, RapierLayoutConfig, RapierLayoutState,
 };
 
 /// Anchors 0 and 2 pinned 400 units apart, node 1 free between them on the axis, edges
@@ -119,8 +119,8 @@ fn weight_zero_keeps_the_edge_as_topology_only() {
     // The edge is still part of the topology: its hash is the weight-1 graph's.
     let weighted = between(1.0, 1.0, springs_only());
     assert_eq!(
-        graph_canvas_layout::topology_hash(&host.scene, &host.extras),
-        graph_canvas_layout::topology_hash(&weighted.scene, &weighted.extras)
+        graph_canvas_layout::scene::topology_hash(&host.scene, &host.extras),
+        graph_canvas_layout::scene::topology_hash(&weighted.scene, &weighted.extras)
     );
 }
 

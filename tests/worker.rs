@@ -7,8 +7,9 @@
 use std::time::{Duration, Instant};
 
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
+use graph_canvas_layout::worker::LayoutWorker;
 use graph_canvas_layout::{
-    CanvasEdge, CanvasNode, CanvasSceneInput, LayoutExtras, LayoutWorker, RapierLayoutConfig,
+    CanvasEdge, CanvasNode, CanvasSceneInput, LayoutExtras, RapierLayoutConfig,
 };
 
 const BOUND: Duration = Duration::from_secs(60);

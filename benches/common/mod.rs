@@ -5,9 +5,10 @@ use graph_canvas_layout::rapier2d::prelude::{
     ActiveEvents, ChannelEventCollector, ColliderBuilder, IntegrationParameters, MotorModel,
     PhysicsWorld, RigidBodyBuilder, RigidBodyHandle, SpringJointBuilder, Vector,
 };
+use graph_canvas_layout::scene::SceneFile;
 use graph_canvas_layout::{
     CanvasSceneInput, CanvasViewport, DeltaMap, Layout, LayoutExtras, RapierLayout,
-    RapierLayoutConfig, RapierLayoutState, SceneFile,
+    RapierLayoutConfig, RapierLayoutState,
 };
 
 pub mod generate;

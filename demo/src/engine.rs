@@ -5,9 +5,10 @@
 
 use std::time::Instant;
 
+use graph_canvas_layout::worker::LayoutWorker;
 use graph_canvas_layout::{
-    CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, Layout, LayoutExtras, LayoutWorker,
-    RapierLayout, RapierLayoutConfig, RapierLayoutState,
+    CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, Layout, LayoutExtras, RapierLayout,
+    RapierLayoutConfig, RapierLayoutState,
 };
 
 /// Graphs of this many nodes or more are laid out on the worker.

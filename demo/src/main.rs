@@ -19,10 +19,12 @@ use std::time::Instant;
 use engine::{Engine, WORKER_FROM};
 
 use eframe::egui;
+use graph_canvas_layout::config::Accuracy;
 use graph_canvas_layout::euclid::default::Point2D;
+use graph_canvas_layout::scene::SceneFile;
 use graph_canvas_layout::{
-    Accuracy, CanvasEdge, CanvasNode, CanvasSceneInput, EdgeJoint, LayoutExtras, NodeShape,
-    RapierLayoutConfig, SceneFile,
+    CanvasEdge, CanvasNode, CanvasSceneInput, EdgeJoint, LayoutExtras, NodeShape,
+    RapierLayoutConfig,
 };
 
 /// A label box's width per character and height, in world units.

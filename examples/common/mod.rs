@@ -7,9 +7,10 @@ pub mod svg;
 use std::hash::Hasher;
 
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
+use graph_canvas_layout::scene::SceneFile;
 use graph_canvas_layout::{
     CanvasSceneInput, CanvasViewport, DeltaMap, Layout, LayoutExtras, RapierLayout,
-    RapierLayoutConfig, RapierLayoutState, SceneFile,
+    RapierLayoutConfig, RapierLayoutState,
 };
 
 #[path = "../../benches/common/generate.rs"]

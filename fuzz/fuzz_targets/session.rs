@@ -7,9 +7,9 @@
 #![no_main]
 
 use arbitrary::{Result, Unstructured};
-use graph_canvas_layout::{
-    AxisLock, BodyKindPolicy, EdgeJoint, NodeForces, RapierLayoutConfig, TopologyUpdate,
-};
+use graph_canvas_layout::{BodyKindPolicy, EdgeJoint, NodeForces, RapierLayoutConfig};
+use graph_canvas_layout::scene::AxisLock;
+use graph_canvas_layout::config::TopologyUpdate;
 use libfuzzer_sys::fuzz_target;
 
 #[path = "../../tests/common/mod.rs"]

@@ -1,4 +1,4 @@
-//! Local disturbance ([`Cooling::reheat_hops`](crate::Cooling::reheat_hops)): what a
+//! Local disturbance ([`Cooling::reheat_hops`](crate::config::Cooling::reheat_hops)): what a
 //! drag, a release, a host move, a pin or an edit touched this call, and the heat that
 //! spreads from it along the edges, hop by hop, to the nodes near it. The heat itself,
 //! and how it cools, is in `heat.rs`.

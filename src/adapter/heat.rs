@@ -2,7 +2,7 @@
 //! reheats it, simulated time cools it, and while it is hot its springs are re-tuned and
 //! (on the first unfolding) its contacts softened or left out. The cold stop at the end
 //! of the schedule is in `rest.rs`; the schedule itself is
-//! [`Cooling`](crate::Cooling).
+//! [`Cooling`](crate::config::Cooling).
 
 use std::hash::Hash;
 
@@ -30,8 +30,8 @@ pub(crate) struct Heat {
     /// until a disturbance, as d3-force stops its timer.
     pub(crate) halted: bool,
     /// The first unfolding: from the first build until the heat first reaches its floor
-    /// (or the layout rests), when [`Cooling::first_contact_heat`](crate::Cooling) and
-    /// [`Cooling::hot_contact_frequency`](crate::Cooling) apply.
+    /// (or the layout rests), when [`Cooling::first_contact_heat`](crate::config::Cooling) and
+    /// [`Cooling::hot_contact_frequency`](crate::config::Cooling) apply.
     pub(crate) unfolding: bool,
     /// The hottest node's own heat after a local disturbance (0 when none is hotter than
     /// the layout).
@@ -109,7 +109,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// Heats the whole layout to at least `alpha`, clamped to the schedule's floor and to
     /// 1, and wakes every body, as d3-force's `simulation.alpha(a).restart()`: the next
     /// calls lay the graph out again from where it is, the way a "relayout" button
-    /// wants, whatever [`Cooling::reheat_hops`](crate::Cooling::reheat_hops) says.
+    /// wants, whatever [`Cooling::reheat_hops`](crate::config::Cooling::reheat_hops) says.
     /// Without a cooling schedule only wakes the bodies.
     ///
     /// # Example
@@ -155,7 +155,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// heat (in steps of 5 %, each re-tune touching every joint; a graph far from its
     /// rest lengths lets them fade toward the heat itself, blended by its median stretch),
     /// and during the first unfolding contacts softened by the heat and let in once it
-    /// has fallen to [`Cooling::first_contact_heat`](crate::Cooling::first_contact_heat).
+    /// has fallen to [`Cooling::first_contact_heat`](crate::config::Cooling::first_contact_heat).
     pub(super) fn heat_world(&mut self) -> FrameHeat {
         let config = &self.config;
         let heat = self.heat;

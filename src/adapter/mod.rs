@@ -228,7 +228,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// (`docs/performance.md` gives the figures); the cost is that thread's core, busy
     /// through the serial parts of the substeps too (rapier's step among them; it lets
     /// go after 2 ms without work). The results are the same bits either way. Without the feature it
-    /// does nothing. [`LayoutWorker::set_pool_awake`](crate::LayoutWorker) passes it
+    /// does nothing. [`LayoutWorker::set_pool_awake`](crate::worker::LayoutWorker) passes it
     /// on to a worker's layout.
     ///
     /// Default: on.
@@ -277,9 +277,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     }
 
     /// The layout's heat under [`RapierLayoutConfig::cooling`] after the last call: 1
-    /// at the first build, at least [`Cooling::reheat`](crate::Cooling::reheat) after a
-    /// disturbance, falling to [`Cooling::min_alpha`](crate::Cooling::min_alpha)
-    /// over [`Cooling::duration`](crate::Cooling::duration). `None` without a schedule.
+    /// at the first build, at least [`Cooling::reheat`](crate::config::Cooling::reheat) after a
+    /// disturbance, falling to [`Cooling::min_alpha`](crate::config::Cooling::min_alpha)
+    /// over [`Cooling::duration`](crate::config::Cooling::duration). `None` without a schedule.
     ///
     /// # Example
     /// ```
@@ -299,7 +299,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     }
 
     /// The heat the forces on `node` act with after the last call: its own after a local
-    /// disturbance ([`Cooling::reheat_hops`](crate::Cooling::reheat_hops)) while that is
+    /// disturbance ([`Cooling::reheat_hops`](crate::config::Cooling::reheat_hops)) while that is
     /// hotter than the layout, else the layout's ([`heat`](Self::heat)). `None` without
     /// a schedule or a body for the node.
     ///
@@ -450,7 +450,7 @@ impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
     /// True when the layout was at rest after the last call: a world exists, no dynamic body moved faster
     /// than [`RapierLayoutConfig::rest_speed`] for [`REST_TIME`] seconds of simulated
     /// time, nothing (a drag, a release, a host move, a topology change) disturbed it
-    /// meanwhile, and every dynamic body is asleep; or a [`Cooling`](crate::Cooling)
+    /// meanwhile, and every dynamic body is asleep; or a [`Cooling`](crate::config::Cooling)
     /// schedule has ended and halted the world. Once true, calls report no motion until
     /// something disturbs the layout. Nodes the last call left out
     /// ([`RapierLayout::skipped`]) do not count: the layout can rest while one waits for

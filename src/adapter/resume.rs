@@ -122,7 +122,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// A layout whose first world starts cold on the scene's positions: a saved picture
     /// comes back as it was. Nothing moves until a disturbance (a drag, a host move, a
     /// pin, an edit), which heats only its neighbourhood, as in a layout that came to
-    /// rest ([`Cooling::reheat_hops`](crate::Cooling::reheat_hops)); the first call
+    /// rest ([`Cooling::reheat_hops`](crate::config::Cooling::reheat_hops)); the first call
     /// returns no delta and [`is_converged`](crate::Layout::is_converged) is true after
     /// it. For a host that saved only its positions; a host that saved a
     /// [`snapshot`](Self::snapshot) gets the motion back too with
@@ -211,7 +211,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     ///   forces as last read are ones a host could set; counts are below 2⁵³.
     /// - **Settings** (the configuration, heat, schedule) are used as any host setting
     ///   is: a value out of range is clamped where it is read, and the counts that bound
-    ///   a call's work are capped (see [`Accuracy::Custom`](crate::Accuracy::Custom) and
+    ///   a call's work are capped (see [`Accuracy::Custom`](crate::config::Accuracy::Custom) and
     ///   [`max_substeps`](RapierLayoutConfig::max_substeps)).
     ///
     /// A restore costs these checks, the seals' hashes and building the id lookups,

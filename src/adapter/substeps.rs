@@ -1,5 +1,5 @@
 //! The simulation of one call: the frame time as equal substeps
-//! ([`StepPlan`], split further by [`Accuracy`](crate::Accuracy)), rapier's solver
+//! ([`StepPlan`], split further by [`Accuracy`](crate::config::Accuracy)), rapier's solver
 //! parameters for this call, and per substep the kinematic drives, the body forces and
 //! one rapier step.
 

@@ -27,7 +27,7 @@ use crate::sanitize::finite_or;
 ///
 /// # Example
 /// ```
-/// use graph_canvas_layout::Cooling;
+/// use graph_canvas_layout::config::Cooling;
 /// let cooling = Cooling::default();
 /// // After the whole duration the heat is at its floor.
 /// let alpha = cooling.cooled(1.0, cooling.duration);
@@ -91,10 +91,10 @@ pub struct Cooling {
     pub stretch_limit: Option<f32>,
     /// The contacts' natural frequency, in hertz, at full heat during the layout's first
     /// unfolding, or `None` for contacts as firm as
-    /// [`ContactSoftness`](crate::ContactSoftness) says throughout. The first unfolding
+    /// [`ContactSoftness`](crate::config::ContactSoftness) says throughout. The first unfolding
     /// runs from the first build until the heat first reaches its floor; during it the
     /// contacts start this soft and firm up geometrically with the heat, reaching
-    /// [`ContactSoftness::natural_frequency`](crate::ContactSoftness) at the floor, so
+    /// [`ContactSoftness::natural_frequency`](crate::config::ContactSoftness) at the floor, so
     /// nodes slip past each other instead of jamming while the graph spreads, and no
     /// overlap remains at rest. Later reheats (drags, edits) keep contacts firm, so a
     /// dragged node always pushes. With the other `force_directed()` settings (measured
@@ -132,7 +132,7 @@ pub struct Cooling {
     /// wake more nodes; a host that wants a full relayout calls
     /// [`RapierLayout::reheat`](crate::RapierLayout::reheat). Only forces of the
     /// layout's own are multiplied: with
-    /// [`SpringModel::Joints`](crate::SpringModel::Joints) springs keep the layout's
+    /// [`SpringModel::Joints`](crate::config::SpringModel::Joints) springs keep the layout's
     /// heat. Values are counted from the first build on; a configuration or gravity
     /// change reheats all of the layout either way. Default: `None`
     /// ([`RapierLayoutConfig::force_directed`](crate::RapierLayoutConfig::force_directed)

@@ -16,7 +16,7 @@ pub enum EdgeJoint {
     /// `stiffness` is force per unit of stretch and `damping` force per unit of
     /// relative speed, with mass from density × disk area. The spring is solved
     /// implicitly. A stiffness above what the timestep resolves,
-    /// [`max_resolved_stiffness`](crate::max_resolved_stiffness) `= m / dt²` (about 7,200
+    /// [`max_resolved_stiffness`](crate::world::max_resolved_stiffness) `= m / dt²` (about 7,200
     /// for two default nodes at 1/60 s), acts as that limit: stiffer springs would
     /// correct their whole stretch within one step and fight each other in any graph
     /// whose edges cannot all have their rest length. The limit is taken when the joint

@@ -9,7 +9,7 @@ use serde::{Deserialize, Serialize};
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct GroupForce {
     /// The pull toward the group's centre, in d3-force's strength units as
-    /// [`AxisTarget::strength`](crate::AxisTarget::strength): the share of the distance
+    /// [`AxisTarget::strength`](crate::scene::AxisTarget::strength): the share of the distance
     /// closed per 1/60 s, critically damped and implicit. Stronger packs a group
     /// tighter against its own springs and the repulsion, until its disks touch; weaker
     /// lets the edges between groups mix them. Costs one pass over the grouped nodes per

@@ -8,7 +8,6 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::forces::many_body::Repulsion;
 use crate::world::bindings::PhysicsMaterial;
 
 pub(crate) mod cooling;
@@ -18,11 +17,14 @@ mod presets;
 pub(crate) mod solver;
 pub(crate) mod stress;
 
-use cooling::Cooling;
 pub use edge_joint::{BodyKindPolicy, EdgeJoint, EdgeWeight, SpringModel};
 pub use groups::GroupForce;
 pub use solver::{Accuracy, ContactModel, ContactSoftness, SolverSettings};
 pub use stress::{StressModel, StressStart};
+
+pub use crate::adapter::REST_TIME;
+pub use crate::forces::many_body::Repulsion;
+pub use cooling::Cooling;
 
 /// What to do when the topology hash changes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]

@@ -22,7 +22,7 @@ impl RapierLayoutConfig {
     ///   100, stiffness 7,200 divided by `min(degree)^0.6`
     ///   ([`spring_degree_exponent`](Self::spring_degree_exponent) 0.6), no spring
     ///   damping. 7,200 is what a 1/60 s step resolves between two default nodes
-    ///   ([`max_resolved_stiffness`](crate::max_resolved_stiffness)), d3's link at full
+    ///   ([`max_resolved_stiffness`](crate::world::max_resolved_stiffness)), d3's link at full
     ///   heat. d3's full share (exponent 1) leaves hub edges too soft here, because
     ///   physical springs pass a subtree's whole pull on to its root edge. The springs
     ///   are forces of the layout's own ([`SpringModel::Forces`]): one loop over the
@@ -130,7 +130,8 @@ impl RapierLayoutConfig {
     ///
     /// # Example
     /// ```
-    /// use graph_canvas_layout::{Accuracy, RapierLayoutConfig};
+    /// use graph_canvas_layout::{RapierLayoutConfig};
+    /// use graph_canvas_layout::config::Accuracy;
     /// let config = RapierLayoutConfig::force_directed_fast();
     /// assert!(!config.collisions && config.accuracy == Accuracy::Fast);
     /// assert_eq!(config.repulsion, RapierLayoutConfig::force_directed().repulsion);

@@ -62,7 +62,7 @@ impl Accuracy {
     ///
     /// # Example
     /// ```
-    /// use graph_canvas_layout::{Accuracy, SolverSettings};
+    /// use graph_canvas_layout::config::{Accuracy, SolverSettings};
     /// let precise = Accuracy::Precise.solver_settings();
     /// assert_eq!(
     ///     precise,
@@ -83,7 +83,7 @@ impl Accuracy {
     ///
     /// # Example
     /// ```
-    /// use graph_canvas_layout::Accuracy;
+    /// use graph_canvas_layout::config::Accuracy;
     /// assert_eq!(Accuracy::Fast.settings(), (1, 1, 1));
     /// ```
     pub fn settings(self) -> (usize, usize, u32) {
@@ -117,7 +117,7 @@ impl Accuracy {
 ///
 /// # Example
 /// ```
-/// use graph_canvas_layout::ContactSoftness;
+/// use graph_canvas_layout::config::ContactSoftness;
 /// let firm = ContactSoftness { natural_frequency: 240.0, damping_ratio: 1.0 };
 /// assert!(firm.overlap_removed_per_step(1.0 / 60.0) > 0.9);
 /// assert!(ContactSoftness::default().overlap_removed_per_step(1.0 / 60.0) < 0.15);

@@ -28,7 +28,7 @@ pub enum StressStart {
 /// [`pivots`](Self::pivots) pivots standing for the nodes around it (Ortmann, Klimenta &
 /// Brandes 2016). Edges are the layout's edge springs (rest length one hop); the other
 /// terms are forces of the layout's own, solved implicitly like
-/// [`SpringModel::Forces`](crate::SpringModel::Forces) springs, and scale with the heat
+/// [`SpringModel::Forces`](crate::config::SpringModel::Forces) springs, and scale with the heat
 /// as they do. Distances count hops: edge weights scale the edge springs' strength, not
 /// the distances.
 ///
@@ -39,7 +39,8 @@ pub enum StressStart {
 ///
 /// # Example
 /// ```
-/// use graph_canvas_layout::{RapierLayoutConfig, StressModel};
+/// use graph_canvas_layout::{RapierLayoutConfig};
+/// use graph_canvas_layout::config::StressModel;
 /// // The full stress (every pair) for a small graph, at exactly 120 units a hop.
 /// let config = RapierLayoutConfig {
 ///     stress: Some(StressModel { pivots: None, fit_length: false, hop_length: 120.0, ..StressModel::default() }),

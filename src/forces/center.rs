@@ -11,7 +11,7 @@ use crate::config::RapierLayoutConfig;
 use crate::sanitize::finite_or;
 
 #[cfg(doc)]
-use crate::Repulsion;
+use crate::config::Repulsion;
 
 /// Pulls every pushed body toward the repulsion's centre.
 #[derive(Debug, Default)]

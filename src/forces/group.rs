@@ -1,5 +1,5 @@
 //! Groups held together and kept apart ([`NodeForces::group`](crate::NodeForces::group),
-//! [`GroupForce`](crate::GroupForce)): every grouped node is pulled toward its group's
+//! [`GroupForce`](crate::config::GroupForce)): every grouped node is pulled toward its group's
 //! centre of mass, critically damped against the group's mean velocity (so a group
 //! moves as a whole freely) and solved implicitly with the springs like the other pulls (`targets.rs`);
 //! with a separation, each node is pushed from the centre of every other group in

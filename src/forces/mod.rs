@@ -71,7 +71,7 @@ pub(crate) struct ForceContext<'a, N> {
 }
 
 /// How the forces on a node scale with its own heat after a local disturbance
-/// ([`Cooling::reheat_hops`](crate::Cooling::reheat_hops)): as they did when the whole
+/// ([`Cooling::reheat_hops`](crate::config::Cooling::reheat_hops)): as they did when the whole
 /// layout was that hot, so a heated neighbourhood replays the schedule that laid it out.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct HeatLaw {
@@ -79,7 +79,7 @@ pub(crate) struct HeatLaw {
     pub(crate) alpha: f32,
     pub(crate) cooling: Option<Cooling>,
     /// The springs' blend from `heat^spring_exponent` toward the heat
-    /// ([`Cooling::stretch_limit`](crate::Cooling::stretch_limit)).
+    /// ([`Cooling::stretch_limit`](crate::config::Cooling::stretch_limit)).
     pub(crate) blend: f32,
 }
 

@@ -1,5 +1,5 @@
 //! The edge springs' pull, d3-force's `link`: springs applied as forces of the layout's
-//! own ([`SpringModel::Forces`](crate::SpringModel::Forces)), and d3's link bias, the
+//! own ([`SpringModel::Forces`](crate::config::SpringModel::Forces)), and d3's link bias, the
 //! uneven share of a spring's pull between its two ends.
 //!
 //! A spring pulls both ends with the same force `k x`. d3-force's link instead moves its
@@ -37,7 +37,7 @@ struct Link {
     rest_length: f32,
     stiffness: f32,
     damping: f32,
-    /// What the timestep resolves ([`max_resolved_stiffness`](crate::max_resolved_stiffness)),
+    /// What the timestep resolves ([`max_resolved_stiffness`](crate::world::max_resolved_stiffness)),
     /// as a rapier spring joint is capped.
     cap: f32,
 }

@@ -56,7 +56,7 @@ pub enum AxisLock {
 /// [`LayoutExtras::forces`](crate::LayoutExtras::forces) feels none of them.
 ///
 /// Changing an entry moves the node smoothly (the forces pull it over the next frames)
-/// and wakes it and, under a [`Cooling`](crate::Cooling) schedule, heats its
+/// and wakes it and, under a [`Cooling`](crate::config::Cooling) schedule, heats its
 /// neighbourhood; no rebuild. Group members are not linked for rapier's sleep: a group
 /// mate asleep far from a moved member (in hops) stays asleep until something near it
 /// wakes it. Bad values (a target beyond ±[`MAX_COORDINATE`](crate::MAX_COORDINATE) or
@@ -66,7 +66,8 @@ pub enum AxisLock {
 ///
 /// # Example
 /// ```
-/// use graph_canvas_layout::{AxisLock, LayoutExtras, NodeForces};
+/// use graph_canvas_layout::{LayoutExtras, NodeForces};
+/// use graph_canvas_layout::scene::AxisLock;
 /// let mut extras = LayoutExtras::<u32>::default();
 /// // A timeline: node 7 at x = 300 (its date), its y left to the layout.
 /// extras.forces.insert(7, NodeForces::default().toward_x(300.0, 0.5));

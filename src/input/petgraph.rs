@@ -87,7 +87,7 @@ impl<N: Clone + Eq + Hash> CanvasSceneInput<N> {
     /// assert_eq!(d, c, "StableGraph reuses the index");
     /// graph.add_edge(a, d, ());
     /// layout.forget_node(&c);
-    /// scene = CanvasSceneInput::from_petgraph_with(&graph, |id, _| graph_canvas_layout::NodeStart {
+    /// scene = CanvasSceneInput::from_petgraph_with(&graph, |id, _| graph_canvas_layout::scene::NodeStart {
     ///     position: positions.get(&id).copied().filter(|_| id != d),
     ///     radius: 0.0,
     /// }, |_| 1.0);
@@ -110,7 +110,8 @@ impl<N: Clone + Eq + Hash> CanvasSceneInput<N> {
     /// ```
     /// use graph_canvas_layout::euclid::default::Point2D;
     /// use graph_canvas_layout::petgraph::Graph;
-    /// use graph_canvas_layout::{CanvasSceneInput, NodeStart};
+    /// use graph_canvas_layout::{CanvasSceneInput};
+    /// use graph_canvas_layout::scene::NodeStart;
     /// let mut graph = Graph::<(f32, f32), f32>::new();
     /// let a = graph.add_node((0.0, 0.0));
     /// let b = graph.add_node((120.0, 0.0));

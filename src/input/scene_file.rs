@@ -31,9 +31,9 @@ pub struct SceneFileNode {
 ///
 /// # Example
 /// ```
-/// use graph_canvas_layout::SceneFile;
+/// use graph_canvas_layout::scene::SceneFile;
 /// let file = SceneFile {
-///     nodes: vec![graph_canvas_layout::SceneFileNode { id: 1, x: 0.0, y: 0.0, radius: 16.0 }],
+///     nodes: vec![graph_canvas_layout::scene::SceneFileNode { id: 1, x: 0.0, y: 0.0, radius: 16.0 }],
 ///     edges: vec![],
 /// };
 /// let scene = file.into_scene();
@@ -75,7 +75,8 @@ impl SceneFile {
     ///
     /// # Example
     /// ```
-    /// use graph_canvas_layout::{LayoutError, SceneFile};
+    /// use graph_canvas_layout::{LayoutError};
+    /// use graph_canvas_layout::scene::SceneFile;
     /// let text = r#"{"nodes":[{"id":1,"x":0,"y":0},{"id":2,"x":40,"y":0}],"edges":[[1,3]]}"#;
     /// let file: SceneFile = serde_json::from_str(text).unwrap();
     /// assert!(matches!(

@@ -16,9 +16,9 @@ use crate::world::bindings::ColliderSpec;
 ///
 /// What a box changes, and what it does not:
 /// - **Contacts.** The layout's own contacts
-///   ([`ContactModel::Disks`](crate::ContactModel::Disks)) part boxes from boxes and
+///   ([`ContactModel::Disks`](crate::config::ContactModel::Disks)) part boxes from boxes and
 ///   from disks by their outlines, not their bounding circles; rapier's contacts
-///   ([`ContactModel::Rapier`](crate::ContactModel::Rapier)) get a cuboid (rounded
+///   ([`ContactModel::Rapier`](crate::config::ContactModel::Rapier)) get a cuboid (rounded
 ///   where the corners are). Rotation stays locked: a label stays level.
 /// - **Mass.** A box weighs what a node of the layout's
 ///   [`default_radius`](crate::RapierLayoutConfig::default_radius) weighs, whatever its

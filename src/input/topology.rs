@@ -152,7 +152,8 @@ impl Topology {
 ///
 /// # Example
 /// ```
-/// use graph_canvas_layout::{euclid::default::Point2D, topology_hash, CanvasEdge, CanvasNode,
+/// use graph_canvas_layout::scene::topology_hash;
+/// use graph_canvas_layout::{euclid::default::Point2D, CanvasEdge, CanvasNode,
 ///     CanvasSceneInput, LayoutExtras};
 /// let a = CanvasSceneInput::new(
 ///     vec![CanvasNode::new(1_u32, Point2D::origin()), CanvasNode::new(2, Point2D::origin())],

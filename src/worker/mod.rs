@@ -83,8 +83,9 @@ impl<N> Default for LayoutFrame<N> {
 ///
 /// # Example
 /// ```
+/// use graph_canvas_layout::worker::LayoutWorker;
 /// use graph_canvas_layout::{euclid::default::Point2D, CanvasEdge, CanvasNode, CanvasSceneInput,
-///     LayoutWorker, RapierLayoutConfig};
+///     RapierLayoutConfig};
 /// let scene = CanvasSceneInput::new(
 ///     (0..6).map(|i| CanvasNode::new(i, Point2D::origin())).collect(),
 ///     (0..6).map(|i| CanvasEdge::new(i, (i + 1) % 6)).collect(),

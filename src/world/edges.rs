@@ -310,7 +310,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     /// Applies springs as forces of the layout's own (`true`) or as rapier joints
     /// (`false`), moving the existing springs in place; bodies keep their motion. See
-    /// [`SpringModel`](crate::SpringModel).
+    /// [`SpringModel`](crate::config::SpringModel).
     pub fn set_springs_as_forces(&mut self, forces: bool) {
         if forces == self.spring_forces {
             return;

@@ -43,10 +43,16 @@ pub(crate) mod saved;
 mod seal;
 pub(crate) mod slot;
 pub(crate) use slot::SlotsView;
+
+pub use bindings::{
+    ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot, PhysicsMaterial, SceneBodyKind,
+};
+pub use events::SceneEvent;
+pub use rapier_joint::max_resolved_stiffness;
 mod spring_scale;
 mod stepping;
 
-use events::{CollisionCollector, SceneEvent};
+use events::CollisionCollector;
 use slot::{JointSlot, NodeSlot};
 use spring_scale::{SpringScale, StretchCache};
 
@@ -203,7 +209,8 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     ///
     /// # Example
     /// ```
-    /// use graph_canvas_layout::{RapierSceneWorld, WorldOptions};
+    /// use graph_canvas_layout::{RapierSceneWorld};
+    /// use graph_canvas_layout::world::WorldOptions;
     /// let world = RapierSceneWorld::<u32>::with_options(WorldOptions {
     ///     collisions: false,
     ///     contact_events: false,
@@ -266,7 +273,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     }
 
     /// Number of edge joints: one per edge the world models a joint for, whether a rapier
-    /// joint or a spring applied as forces ([`SpringModel`](crate::SpringModel)).
+    /// joint or a spring applied as forces ([`SpringModel`](crate::config::SpringModel)).
     pub fn joint_count(&self) -> usize {
         self.joints.len()
     }

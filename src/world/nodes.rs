@@ -1,6 +1,6 @@
 //! Bodies in and out: [`RapierSceneWorld::build_bodies`], `insert_node`, `remove_node`
 //! (which takes the node's joints with it) and in-place shape edits. A body built from a
-//! binding weighs `density × area`, never below [`MIN_BODY_MASS`](crate::MIN_BODY_MASS);
+//! binding weighs `density × area`, never below [`MIN_BODY_MASS`](crate::world::MIN_BODY_MASS);
 //! the layout gives its boxes the mass of a default disk instead (`adapter/edits.rs`).
 
 use std::hash::Hash;

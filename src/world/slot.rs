@@ -58,7 +58,7 @@ pub(crate) struct HostSync {
     /// while the host keeps the position it was told, the next sync has nothing to do.
     pub(crate) synced: bool,
     /// The node's own heat after a local disturbance
-    /// ([`Cooling::reheat_hops`](crate::Cooling::reheat_hops)), or 0 while it has the
+    /// ([`Cooling::reheat_hops`](crate::config::Cooling::reheat_hops)), or 0 while it has the
     /// layout's.
     pub(crate) heat: f32,
     /// The node's per-node forces as the last call applied them
@@ -93,7 +93,7 @@ impl HostSync {
 pub(crate) struct JointSlot<N> {
     pub(crate) key: (u64, u64),
     /// The rapier joint, or `None` for a spring applied as forces
-    /// ([`SpringModel::Forces`](crate::SpringModel::Forces)).
+    /// ([`SpringModel::Forces`](crate::config::SpringModel::Forces)).
     pub(crate) handle: Option<ImpulseJointHandle>,
     pub(crate) a: N,
     pub(crate) b: N,
@@ -105,7 +105,7 @@ pub(crate) struct JointSlot<N> {
 
 /// One spring as the forces read it: its two bodies' slots, its parameters as inserted
 /// (before the world's spring scale) and the stiffness the joint timestep resolves for
-/// the two bodies ([`max_resolved_stiffness`](crate::max_resolved_stiffness)).
+/// the two bodies ([`max_resolved_stiffness`](crate::world::max_resolved_stiffness)).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct SpringView {
     pub(crate) a: usize,

@@ -1,6 +1,6 @@
 //! Every spring scaled at once, in place: a cooling layout fades its springs with its
 //! heat, and a graph far from its rest lengths (by the springs' median stretch) lets them
-//! fade faster ([`Cooling::stretch_limit`](crate::Cooling::stretch_limit)).
+//! fade faster ([`Cooling::stretch_limit`](crate::config::Cooling::stretch_limit)).
 
 use std::hash::Hash;
 
@@ -87,7 +87,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// `stretch_limit`, by `far` once it is twice that or more, and by a geometric blend
     /// of the two in between. A non-finite or non-positive limit always gives `near`.
     /// A cooling layout passes `heat^spring_exponent`, the heat and
-    /// [`Cooling::stretch_limit`](crate::Cooling::stretch_limit). Calls with the same three
+    /// [`Cooling::stretch_limit`](crate::config::Cooling::stretch_limit). Calls with the same three
     /// values as the last are skipped unless bodies or joints changed since (the median
     /// is read again then). Returns how many joints changed.
     ///

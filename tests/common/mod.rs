@@ -5,9 +5,10 @@ use std::collections::HashMap;
 use std::hash::Hash;
 
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
+use graph_canvas_layout::scene::SceneFile;
 use graph_canvas_layout::{
     CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, DeltaMap, Layout, LayoutError,
-    LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState, SceneFile,
+    LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState,
 };
 
 pub const FRAME: f32 = 1.0 / 60.0;

@@ -5,10 +5,12 @@
 
 use std::collections::{HashMap, HashSet};
 
+use graph_canvas_layout::config::EdgeWeight;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
+use graph_canvas_layout::scene::AxisLock;
 use graph_canvas_layout::{
-    AxisLock, CanvasNode, CanvasSceneInput, DeltaMap, EdgeJoint, EdgeWeight, Layout,
-    LayoutSnapshot, NodeForces, RapierLayout, RapierLayoutConfig, MAX_COORDINATE,
+    CanvasNode, CanvasSceneInput, DeltaMap, EdgeJoint, Layout, LayoutSnapshot, NodeForces,
+    RapierLayout, RapierLayoutConfig, MAX_COORDINATE,
 };
 
 use super::{edge, node, Host, FRAME};

@@ -13,7 +13,7 @@ use egui::{Panel, Pos2};
 use egui_graphs::{
     Graph, GraphView, LayoutState, MetadataFrame, SettingsNavigation, SettingsStyle,
 };
-use graph_canvas_layout::SceneFile;
+use graph_canvas_layout::scene::SceneFile;
 use graph_canvas_layout_egui_graphs::{LabelBox, RapierGraphLayout, RapierGraphState};
 use petgraph::stable_graph::{DefaultIx, NodeIndex, StableGraph};
 use petgraph::Undirected;

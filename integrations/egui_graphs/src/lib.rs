@@ -37,7 +37,7 @@
 //!
 //! # Large graphs
 //! A graph of [`WORKER_FROM`] nodes or more when the layout first sees it is laid out
-//! on a [`LayoutWorker`](graph_canvas_layout::LayoutWorker), on a thread of its own:
+//! on a [`LayoutWorker`](graph_canvas_layout::worker::LayoutWorker), on a thread of its own:
 //! each frame sends what changed in the graph (nodes and edges added or removed, shapes,
 //! drags, pins, the configuration, nodes the app moved) and takes the newest positions,
 //! so egui's frame never waits for a step. The worker follows real time, so

@@ -7,9 +7,10 @@ use std::collections::{BTreeSet, HashMap};
 
 use egui::Pos2;
 use graph_canvas_layout::euclid::default::Point2D;
+use graph_canvas_layout::scene::topology_hash;
+use graph_canvas_layout::worker::LayoutWorker;
 use graph_canvas_layout::{
-    topology_hash, CanvasEdge, CanvasSceneInput, LayoutExtras, LayoutWorker, NodeShape,
-    RapierLayoutConfig,
+    CanvasEdge, CanvasSceneInput, LayoutExtras, NodeShape, RapierLayoutConfig,
 };
 
 /// Graphs of this many nodes or more, when the layout first sees them, are laid out on a

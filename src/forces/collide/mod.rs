@@ -1,4 +1,4 @@
-//! Disk separation of the layout's own ([`ContactModel::Disks`](crate::ContactModel)):
+//! Disk separation of the layout's own ([`ContactModel::Disks`](crate::config::ContactModel)):
 //! d3-force's `forceCollide` as soft contact constraints between disks, solved the way
 //! Box2D v3 solves its contacts ("soft step"), without rapier's pair bookkeeping.
 //!
@@ -7,7 +7,7 @@
 //!    grid (`grid.rs`); each starts from the impulse it ended the last substep with
 //!    (warm starting), and a few projected Gauss–Seidel passes give every pair the
 //!    normal impulse that keeps it from closing beyond touching and pushes an overlap
-//!    apart as a spring of [`ContactSoftness`](crate::ContactSoftness)' frequency and
+//!    apart as a spring of [`ContactSoftness`](crate::config::ContactSoftness)' frequency and
 //!    damping ratio would (speed-limited);
 //! 2. rapier moves the bodies with the resulting velocities;
 //! 3. **after** ([`Collide::relax`]): passes without the push take out the speed the

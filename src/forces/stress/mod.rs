@@ -1,4 +1,4 @@
-//! The stress model's pull ([`StressModel`](crate::StressModel)): every node kept at its
+//! The stress model's pull ([`StressModel`](crate::config::StressModel)): every node kept at its
 //! graph distance from the nodes near it and from its component's pivots, by springs of
 //! rest length `hops × hop length` and stiffness `edge stiffness × weight` (`1 / hops²`
 //! for exact terms, `s / hops²` for a pivot standing for `s` nodes; `stress/model.rs`).

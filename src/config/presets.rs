@@ -130,7 +130,7 @@ impl RapierLayoutConfig {
     ///
     /// # Example
     /// ```
-    /// use graph_canvas_layout::{RapierLayoutConfig};
+    /// use graph_canvas_layout::RapierLayoutConfig;
     /// use graph_canvas_layout::config::Accuracy;
     /// let config = RapierLayoutConfig::force_directed_fast();
     /// assert!(!config.collisions && config.accuracy == Accuracy::Fast);

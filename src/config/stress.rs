@@ -39,7 +39,7 @@ pub enum StressStart {
 ///
 /// # Example
 /// ```
-/// use graph_canvas_layout::{RapierLayoutConfig};
+/// use graph_canvas_layout::RapierLayoutConfig;
 /// use graph_canvas_layout::config::StressModel;
 /// // The full stress (every pair) for a small graph, at exactly 120 units a hop.
 /// let config = RapierLayoutConfig {

@@ -240,31 +240,13 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         }
     }
 
-    /// Forces that continue where `saved` was taken (their caches empty), once its
-    /// parts are checked: the host's forces usable and their index built again from
-    /// them, the warm-start impulses finite, the stress model and the rest's balance
-    /// whole ([`StressForce::check`](stress::StressForce::check)).
+    /// Forces that continue where `saved` was taken (their caches empty), once each
+    /// part has checked what it reads.
     ///
     /// # Errors
     /// The part that does not agree, for [`SnapshotError::Inconsistent`].
     pub(crate) fn from_saved(mut saved: SavedForces) -> Result<Self, String> {
-        let targets = &mut saved.targets;
-        if targets.by_slot.iter().any(|f| f.usable() != *f) {
-            return Err("forces.targets.by_slot: a value no host could set".into());
-        }
-        let slots = targets.by_slot.len();
-        let held = |&(s, _, at): &(u32, _, f32)| (s as usize) < slots && at.is_finite();
-        if !targets.locks.iter().all(held) {
-            return Err("forces.targets.locks".into());
-        }
-        targets.index();
-        if !saved
-            .contacts
-            .iter()
-            .all(|&(_, _, impulse)| impulse.is_finite())
-        {
-            return Err("forces.contacts: an impulse not finite".into());
-        }
+        saved.targets.restore_index()?;
         saved.stress.check()?;
         saved.rest_bias.check()?;
         let mut forces = Self {
@@ -276,7 +258,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         };
         forces
             .collide
-            .set_warm_start_state(saved.contacts, saved.contacts_version);
+            .set_warm_start_state(saved.contacts, saved.contacts_version)?;
         Ok(forces)
     }
 

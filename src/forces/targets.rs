@@ -40,6 +40,22 @@ impl NodeTargets {
         self.by_slot.get(slot).copied().unwrap_or_default()
     }
 
+    /// A snapshot's table made ready to read: every entry one a host could set, every
+    /// lock on a slot of the table at a finite coordinate, and the pulled slots and
+    /// groups sorted again from the entries ([`index`](Self::index)), not read.
+    pub(crate) fn restore_index(&mut self) -> Result<(), &'static str> {
+        if self.by_slot.iter().any(|f| f.usable() != *f) {
+            return Err("forces.targets.by_slot: a value no host could set");
+        }
+        let slots = self.by_slot.len();
+        let held = |&(s, _, at): &(u32, _, f32)| (s as usize) < slots && at.is_finite();
+        if !self.locks.iter().all(held) {
+            return Err("forces.targets.locks");
+        }
+        self.index();
+        Ok(())
+    }
+
     /// Sorts what `by_slot` holds into the pulled slots and the groups; the locks are
     /// the adapter's, which knows where each body is.
     pub(crate) fn index(&mut self) {

@@ -110,7 +110,7 @@ impl<N: Clone + Eq + Hash> CanvasSceneInput<N> {
     /// ```
     /// use graph_canvas_layout::euclid::default::Point2D;
     /// use graph_canvas_layout::petgraph::Graph;
-    /// use graph_canvas_layout::{CanvasSceneInput};
+    /// use graph_canvas_layout::CanvasSceneInput;
     /// use graph_canvas_layout::scene::NodeStart;
     /// let mut graph = Graph::<(f32, f32), f32>::new();
     /// let a = graph.add_node((0.0, 0.0));

@@ -70,12 +70,13 @@ impl SceneFile {
     ///
     /// # Errors
     /// [`LayoutError`] for the first node with a non-finite position, one beyond
-    /// ±[`MAX_COORDINATE`](crate::MAX_COORDINATE), a negative or non-finite radius or a
-    /// repeated id, or the first edge naming a node the file lacks.
+    /// ±[`MAX_COORDINATE`](crate::MAX_COORDINATE), a radius outside 0 to
+    /// [`MAX_COORDINATE`](crate::MAX_COORDINATE) or a repeated id, or the first edge
+    /// naming a node the file lacks.
     ///
     /// # Example
     /// ```
-    /// use graph_canvas_layout::{LayoutError};
+    /// use graph_canvas_layout::LayoutError;
     /// use graph_canvas_layout::scene::SceneFile;
     /// let text = r#"{"nodes":[{"id":1,"x":0,"y":0},{"id":2,"x":40,"y":0}],"edges":[[1,3]]}"#;
     /// let file: SceneFile = serde_json::from_str(text).unwrap();

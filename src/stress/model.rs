@@ -335,6 +335,14 @@ impl SparseStress {
         if sizes != self.sizes {
             return Err("sizes");
         }
+        if self.weight_start.windows(2).any(|w| w[0] >= w[1])
+            || self
+                .weight_start
+                .last()
+                .is_some_and(|&s| s as usize >= self.weights.len())
+        {
+            return Err("weight_start");
+        }
         let mut end = 0;
         for (c, &(a, b)) in self.pivot_range.iter().enumerate() {
             let fits = a == end && a <= b && b as usize <= self.pivots.len();
@@ -343,26 +351,15 @@ impl SparseStress {
                 return Err("pivot_range");
             }
             end = b;
-            // As `component_weights` reads them.
+            // As `component_weights` reads them (within `weights`, by the check above).
             let at = |k: u32| self.weight_start.get(k as usize).map(|&s| s as usize);
             let table = at(a).unwrap_or(0)..at(b).unwrap_or(self.weights.len());
-            if table.start > table.end || table.end > self.weights.len() {
-                return Err("weight_start");
-            }
             if !self.full[c] && table.len() != (b - a) as usize * stride {
                 return Err("stride");
             }
         }
         if end as usize != self.pivots.len() || self.pivots.iter().any(|&p| p as usize >= n) {
             return Err("pivots");
-        }
-        if self.weight_start.windows(2).any(|w| w[0] >= w[1])
-            || self
-                .weight_start
-                .last()
-                .is_some_and(|&s| s as usize >= self.weights.len())
-        {
-            return Err("weight_start");
         }
         if !self.weights.iter().all(|w| w.is_finite() && *w >= 0.0) {
             return Err("weights");

@@ -209,7 +209,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     ///
     /// # Example
     /// ```
-    /// use graph_canvas_layout::{RapierSceneWorld};
+    /// use graph_canvas_layout::RapierSceneWorld;
     /// use graph_canvas_layout::world::WorldOptions;
     /// let world = RapierSceneWorld::<u32>::with_options(WorldOptions {
     ///     collisions: false,

@@ -265,14 +265,19 @@ impl Collide {
         (self.last.clone(), self.last_version)
     }
 
-    /// Puts back what [`warm_start_state`](Self::warm_start_state) returned.
+    /// Puts back what [`warm_start_state`](Self::warm_start_state) returned, or
+    /// refuses impulses that are not finite (a damaged snapshot's).
     pub(crate) fn set_warm_start_state(
         &mut self,
         last: Vec<(u32, u32, f32)>,
         version: Option<u64>,
-    ) {
+    ) -> Result<(), &'static str> {
+        if !last.iter().all(|&(_, _, impulse)| impulse.is_finite()) {
+            return Err("forces.contacts: an impulse not finite");
+        }
         self.last = last;
         self.last_version = version;
+        Ok(())
     }
 
     /// Forgets the outlines read for a world version (a new world counts its versions

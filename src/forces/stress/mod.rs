@@ -105,10 +105,7 @@ impl StressForce {
         }
         let finite = self.pivot_force.iter().all(|f| f.is_finite())
             && self.pivot_stiffness.iter().all(|k| k.is_finite())
-            && self
-                .pivot_at
-                .iter()
-                .all(|p| p.x.is_finite() && p.y.is_finite());
+            && self.pivot_at.iter().all(|p| p.is_finite());
         if !finite {
             return Err("forces.stress: pivot sums not finite".into());
         }

@@ -17,6 +17,7 @@ use std::time::{Duration, Instant};
 use common::*;
 use criterion::{black_box, criterion_group, criterion_main, Criterion, SamplingMode};
 use graph_canvas_layout::config::Accuracy;
+use graph_canvas_layout::config::{Contacts, Solver};
 use graph_canvas_layout::{Layout, RapierLayoutConfig};
 
 const WARM: usize = 30;
@@ -230,12 +231,18 @@ fn headline(c: &mut Criterion) {
         "rapier_floor_rotating",
     );
     let no_collisions = RapierLayoutConfig {
-        collisions: false,
+        contacts: Contacts {
+            enabled: false,
+            ..Default::default()
+        },
         ..Default::default()
     };
     persistent(c, "n200_e500", no_collisions, "persistent_no_collisions");
     let events = RapierLayoutConfig {
-        contact_events: true,
+        contacts: Contacts {
+            events: true,
+            ..Default::default()
+        },
         ..Default::default()
     };
     persistent(c, "n200_e500", events, "persistent_contact_events");
@@ -251,7 +258,10 @@ fn presets(c: &mut Criterion) {
         ("precise", Accuracy::Precise),
     ] {
         let config = RapierLayoutConfig {
-            accuracy,
+            solver: Solver {
+                accuracy,
+                ..Default::default()
+            },
             ..Default::default()
         };
         persistent(c, "n200_e500", config, &format!("persistent_{label}"));
@@ -360,7 +370,10 @@ fn large(c: &mut Criterion) {
             "persistent",
         );
         let fast = RapierLayoutConfig {
-            accuracy: Accuracy::Fast,
+            solver: Solver {
+                accuracy: Accuracy::Fast,
+                ..Default::default()
+            },
             ..Default::default()
         };
         persistent_from(c, name, start.clone(), fast, "persistent_fast");

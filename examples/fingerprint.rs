@@ -18,6 +18,7 @@ use graph_canvas_layout::{
 mod common;
 
 use common::{load, Fnv};
+use graph_canvas_layout::config::Contacts;
 
 const FRAME: f32 = 1.0 / 60.0;
 
@@ -336,7 +337,10 @@ fn main() {
             RapierLayoutConfig {
                 edge_joint: EdgeJoint::Distance { length: 80.0 },
                 body_kind_policy: BodyKindPolicy::PinnedKinematic,
-                contact_events: true,
+                contacts: Contacts {
+                    events: true,
+                    ..Default::default()
+                },
                 ..default()
             },
         ),
@@ -344,7 +348,10 @@ fn main() {
             "none/no_collisions",
             RapierLayoutConfig {
                 edge_joint: EdgeJoint::None,
-                collisions: false,
+                contacts: Contacts {
+                    enabled: false,
+                    ..Default::default()
+                },
                 ..default()
             },
         ),

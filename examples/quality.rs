@@ -103,16 +103,18 @@ fn leave_out(config: &mut RapierLayoutConfig, setting: &str) {
         .expect("force-directed presets cool");
     match setting {
         "spring_exponent" => cooling.spring_exponent = 1.0,
-        "spring_degree_exponent" => config.spring_degree_exponent = 1.0,
-        "link_bias" => config.link_bias = 0.0,
+        "spring_degree_exponent" => config.springs.degree_exponent = 1.0,
+        "link_bias" => config.springs.link_bias = 0.0,
         "first_contact_heat" => cooling.first_contact_heat = None,
         "hot_contact_frequency" => cooling.hot_contact_frequency = None,
         "stretch_limit" => cooling.stretch_limit = None,
-        "accuracy" => config.accuracy = Accuracy::Balanced,
-        "contact_model" => config.contact_model = graph_canvas_layout::config::ContactModel::Rapier,
-        "spring_model" => config.spring_model = graph_canvas_layout::config::SpringModel::Joints,
+        "accuracy" => config.solver.accuracy = Accuracy::Balanced,
+        "contact_model" => {
+            config.contacts.model = graph_canvas_layout::config::ContactModel::Rapier
+        }
+        "spring_model" => config.springs.model = graph_canvas_layout::config::SpringModel::Joints,
         "reheat_hops" => cooling.reheat_hops = None,
-        "flight_damping" => config.flight_damping = None,
+        "flight_damping" => config.throw.flight_damping = None,
         other => panic!(
             "--leave-out takes spring_exponent, spring_degree_exponent, link_bias, \
              first_contact_heat, hot_contact_frequency, stretch_limit, accuracy, contact_model, \
@@ -221,9 +223,9 @@ fn main() {
         match arg.as_str() {
             "--fast" | "--default" => {}
             "--spring-forces" => {
-                config.spring_model = graph_canvas_layout::config::SpringModel::Forces
+                config.springs.model = graph_canvas_layout::config::SpringModel::Forces
             }
-            "--disks" => config.contact_model = graph_canvas_layout::config::ContactModel::Disks,
+            "--disks" => config.contacts.model = graph_canvas_layout::config::ContactModel::Disks,
             "--starts" => {
                 starts = rest
                     .next()

@@ -25,6 +25,7 @@ use graph_canvas_layout::{
 mod common;
 
 use common::load;
+use graph_canvas_layout::config::{Contacts, Solver};
 
 const FRAME: f32 = 1.0 / 60.0;
 
@@ -112,7 +113,10 @@ fn simulate(
 
 fn run(scene: &CanvasSceneInput<u32>, setting: Setting) -> Run {
     let config = RapierLayoutConfig {
-        accuracy: setting.accuracy,
+        solver: Solver {
+            accuracy: setting.accuracy,
+            ..Default::default()
+        },
         ..Default::default()
     };
     let mut layout = RapierLayout::new(config);
@@ -159,8 +163,14 @@ fn spring_error(scene: &CanvasSceneInput<u32>, a: &Positions, reference: &Positi
 fn energy_drift(scene: &CanvasSceneInput<u32>, setting: Setting) -> f32 {
     let (rest, k) = (100.0, 50.0);
     let mut config = RapierLayoutConfig {
-        accuracy: setting.accuracy,
-        collisions: false,
+        solver: Solver {
+            accuracy: setting.accuracy,
+            ..Default::default()
+        },
+        contacts: Contacts {
+            enabled: false,
+            ..Default::default()
+        },
         edge_joint: EdgeJoint::Spring {
             rest_length: rest,
             stiffness: k,

@@ -44,7 +44,7 @@
 //! - Pinned nodes never move by physics; dragged nodes sit exactly where the host puts
 //!   them; releasing a drag throws the node with the pointer's speed over its last
 //!   move, unless the pointer stood still for longer than
-//!   [`throw_window`](RapierLayoutConfig::throw_window) before the release.
+//!   [`throw.window`](crate::config::Throw::window) before the release.
 //! - A free node the host moved itself (undo, snap) is put where the host put it.
 //! - [`RapierLayout::try_step`] rejects bad input with a [`LayoutError`] and changes
 //!   nothing; [`Layout::step`] leaves bad elements out and never panics.
@@ -100,7 +100,7 @@
 //! **Two `dt`s?** [`Layout::step`]'s `dt` is the frame time: how long since the last
 //! call (drags are measured against it). [`RapierLayoutState::dt`] is the physics'
 //! fixed timestep: each call covers its frame time in substeps no longer than that
-//! (default 1/60 s), up to [`RapierLayoutConfig::max_frame_time`].
+//! (default 1/60 s), up to [`FrameLimits::max_frame_time`](crate::config::FrameLimits::max_frame_time).
 //!
 //! **What is the viewport for?** Nothing, here: [`CanvasViewport`] is part of the
 //! [`Layout`] contract for layouts that work on what is visible; this one lays out the
@@ -110,13 +110,13 @@
 //! [`RapierLayout::skipped`] lists what the last call left out and why, and
 //! [`RapierLayout::problems`] lists every problem of a scene at once.
 //!
-//! **How fast can a node fly?** [`RapierLayoutConfig::max_speed`] (default 40,000 units
+//! **How fast can a node fly?** [`Solver::max_speed`](crate::config::Solver::max_speed) (default 40,000 units
 //! per second) caps every body; faster throws fly at the cap.
 //!
 //! **Jitter at rest?** A resting layout reports nothing: rapier puts bodies slower than
 //! 5 units/s (`0.05 × length_unit`) for 0.5 s to sleep and they stop exactly,
 //! [`Layout::is_converged`] waits for that, and displacements under
-//! [`RapierLayoutConfig::delta_epsilon`] are not reported. Dense piles of disks pushed
+//! [`RestDetection::delta_epsilon`](crate::config::RestDetection::delta_epsilon) are not reported. Dense piles of disks pushed
 //! together by springs settle more slowly; [`Accuracy::Precise`](crate::config::Accuracy::Precise) resolves their
 //! contacts in fewer frames, and the layout presets keep nodes apart in the first place.
 //!

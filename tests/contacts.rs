@@ -4,6 +4,7 @@ mod common;
 
 use common::*;
 use graph_canvas_layout::config::ContactModel;
+use graph_canvas_layout::config::Contacts;
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::{CanvasSceneInput, EdgeJoint, RapierLayoutConfig, SceneEvent};
 
@@ -25,7 +26,10 @@ fn overlapping_disks_are_pushed_apart() {
 fn no_collider_when_collisions_are_off() {
     let scene = CanvasSceneInput::new(vec![node(0_u32, 0.0, 0.0), node(1, 10.0, 0.0)], vec![]);
     let config = RapierLayoutConfig {
-        collisions: false,
+        contacts: Contacts {
+            enabled: false,
+            ..Default::default()
+        },
         ..Default::default()
     };
     let mut host = Host::new(scene, config);
@@ -45,7 +49,10 @@ fn contact_begin_and_end_are_reported_by_node_id() {
         vec![edge(0, 1)],
     );
     let config = RapierLayoutConfig {
-        contact_events: true,
+        contacts: Contacts {
+            events: true,
+            ..Default::default()
+        },
         edge_joint: EdgeJoint::Distance { length: 200.0 },
         ..Default::default()
     };
@@ -78,7 +85,10 @@ fn no_events_are_recorded_unless_asked_for() {
 
 fn disks() -> RapierLayoutConfig {
     RapierLayoutConfig {
-        contact_model: ContactModel::Disks,
+        contacts: Contacts {
+            model: ContactModel::Disks,
+            ..Default::default()
+        },
         ..Default::default()
     }
 }
@@ -146,7 +156,10 @@ fn a_dragged_disk_pushes_resting_ones_aside_and_a_pinned_one_holds() {
 fn contact_events_keep_rapier_colliders_under_the_disk_model() {
     let scene = CanvasSceneInput::new(vec![node(0_u32, 0.0, 0.0), node(1, 20.0, 0.0)], vec![]);
     let config = RapierLayoutConfig {
-        contact_events: true,
+        contacts: Contacts {
+            events: true,
+            ..disks().contacts
+        },
         ..disks()
     };
     let mut host = Host::new(scene, config);

@@ -82,7 +82,7 @@ fn the_state_timestep_sets_the_substep_length() {
 #[test]
 fn precise_accuracy_still_takes_one_whole_fixed_step_for_unusable_dt() {
     let mut host = falling();
-    host.layout.config.accuracy = graph_canvas_layout::config::Accuracy::Precise;
+    host.layout.config.solver.accuracy = graph_canvas_layout::config::Accuracy::Precise;
     host.frame(f32::NAN);
     let t = host.state.simulated_time;
     assert!(

@@ -5,6 +5,7 @@ mod common;
 
 use common::*;
 use graph_canvas_layout::config::SpringModel;
+use graph_canvas_layout::config::{Contacts, Springs};
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::{CanvasSceneInput, EdgeJoint, RapierLayoutConfig};
 
@@ -12,7 +13,10 @@ fn config(joint: EdgeJoint) -> RapierLayoutConfig {
     // Collisions off so only the joint acts between the two disks.
     RapierLayoutConfig {
         edge_joint: joint,
-        collisions: false,
+        contacts: Contacts {
+            enabled: false,
+            ..Default::default()
+        },
         ..Default::default()
     }
 }
@@ -202,7 +206,10 @@ fn switching_the_joint_kind_replaces_joints_without_a_rebuild() {
 
 fn as_forces(joint: EdgeJoint) -> RapierLayoutConfig {
     RapierLayoutConfig {
-        spring_model: SpringModel::Forces,
+        springs: Springs {
+            model: SpringModel::Forces,
+            ..config(joint).springs
+        },
         ..config(joint)
     }
 }
@@ -265,7 +272,7 @@ fn ropes_and_rods_stay_rapier_joints_with_springs_as_forces() {
         EdgeJoint::Distance { length: 150.0 },
     ] {
         let mut host = pair_at(300.0, joint);
-        host.layout.config.spring_model = SpringModel::Forces;
+        host.layout.config.springs.model = SpringModel::Forces;
         host.frames(120);
         let world = host.layout.world().unwrap();
         assert_eq!(world.rapier_joint_count(), 1, "{joint:?}");
@@ -280,7 +287,7 @@ fn switching_the_spring_model_moves_springs_in_place() {
     let mut kept = pair_at(200.0, SPRING);
     switched.frames(5);
     kept.frames(5);
-    switched.layout.config.spring_model = SpringModel::Forces;
+    switched.layout.config.springs.model = SpringModel::Forces;
     switched.frame(FRAME);
     kept.frame(FRAME);
     let world = switched.layout.world().unwrap();

@@ -4,6 +4,7 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::{Contacts, Springs};
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::{CanvasSceneInput, EdgeJoint, RapierLayoutConfig};
 
@@ -29,8 +30,14 @@ fn config(link_bias: f32) -> RapierLayoutConfig {
             stiffness: 2_000.0,
             damping: 0.0,
         },
-        collisions: false,
-        link_bias,
+        contacts: Contacts {
+            enabled: false,
+            ..Default::default()
+        },
+        springs: Springs {
+            link_bias,
+            ..Default::default()
+        },
         ..Default::default()
     }
 }

@@ -6,6 +6,7 @@ mod common;
 
 use common::*;
 use graph_canvas_layout::config::SpringModel;
+use graph_canvas_layout::config::Springs;
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::quality::hop_distances;
 use graph_canvas_layout::scene::AxisLock;
@@ -367,7 +368,10 @@ fn a_pull_along_x_leaves_y_as_free_as_without_it() {
             vec![edge(0, 1)],
         );
         let config = RapierLayoutConfig {
-            spring_model: SpringModel::Forces,
+            springs: Springs {
+                model: SpringModel::Forces,
+                ..Default::default()
+            },
             ..RapierLayoutConfig::default()
         };
         let mut host = Host::new(scene, config);

@@ -9,6 +9,7 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::Throw;
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::{CanvasSceneInput, RapierLayoutConfig};
 
@@ -58,7 +59,10 @@ fn a_release_in_a_frame_the_pointer_did_not_report_still_throws() {
     // With a window of 0, only a move in the frame just before the release counts: the
     // same release a frame after a report throws nothing.
     let last_frame_only = RapierLayoutConfig {
-        throw_window: 0.0,
+        throw: Throw {
+            window: 0.0,
+            ..Default::default()
+        },
         ..RapierLayoutConfig::default()
     };
     let v = throw_with_pointer_gaps(last_frame_only, true);

@@ -6,6 +6,7 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::RestDetection;
 use graph_canvas_layout::euclid::default::Vector2D;
 use graph_canvas_layout::{CanvasSceneInput, Layout, RapierLayoutConfig};
 
@@ -28,7 +29,10 @@ fn a_large_report_threshold_does_not_freeze_slow_nodes() {
         vec![edge(0, 1)],
     );
     let config = RapierLayoutConfig {
-        delta_epsilon: 0.5,
+        rest: RestDetection {
+            delta_epsilon: 0.5,
+            ..Default::default()
+        },
         ..Default::default()
     };
     let mut host = Host::new(scene, config);

@@ -31,7 +31,7 @@ fn custom_counts_are_capped() {
 #[test]
 fn a_snapshot_asking_for_endless_iterations_carries_on() {
     let mut config = RapierLayoutConfig::stress();
-    config.accuracy = Accuracy::Custom {
+    config.solver.accuracy = Accuracy::Custom {
         solver_iterations: 2,
         internal_pgs_iterations: 1,
         substeps: 1,

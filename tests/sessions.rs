@@ -10,6 +10,7 @@ mod common;
 
 use common::session::{run, run_resuming, Action};
 use common::FRAME;
+use graph_canvas_layout::config::Contacts;
 use graph_canvas_layout::config::TopologyUpdate;
 use graph_canvas_layout::scene::AxisLock;
 use graph_canvas_layout::{EdgeJoint, NodeForces, RapierLayoutConfig};
@@ -156,7 +157,10 @@ fn config() -> impl Strategy<Value = RapierLayoutConfig> {
             RapierLayoutConfig {
                 edge_joint,
                 topology_update,
-                collisions,
+                contacts: Contacts {
+                    enabled: collisions,
+                    ..base.contacts
+                },
                 ..base
             }
         })

@@ -11,6 +11,7 @@ mod generate;
 use common::*;
 use generate::label_boxes;
 use graph_canvas_layout::config::ContactModel;
+use graph_canvas_layout::config::Contacts;
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::{
     quality, CanvasNode, CanvasSceneInput, EdgeJoint, LayoutError, RapierLayoutConfig,
@@ -109,7 +110,10 @@ fn boxes_part_until_their_sides_touch_under_either_contact_model() {
         (
             "Rapier",
             RapierLayoutConfig {
-                contact_model: ContactModel::Rapier,
+                contacts: Contacts {
+                    model: ContactModel::Rapier,
+                    ..Default::default()
+                },
                 ..RapierLayoutConfig::default()
             },
         ),

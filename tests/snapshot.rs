@@ -6,6 +6,7 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::Contacts;
 use graph_canvas_layout::euclid::default::Vector2D;
 use graph_canvas_layout::{
     CanvasSceneInput, DeltaMap, Layout, LayoutSnapshot, RapierLayout, RapierLayoutConfig,
@@ -26,7 +27,10 @@ fn configs() -> Vec<(&'static str, RapierLayoutConfig)> {
         (
             "events",
             RapierLayoutConfig {
-                contact_events: true,
+                contacts: Contacts {
+                    events: true,
+                    ..Default::default()
+                },
                 ..RapierLayoutConfig::default()
             },
         ),
@@ -233,7 +237,26 @@ fn a_damaged_snapshot_is_refused_and_changes_nothing() {
         target.layout.restore(snapshot),
         Err(SnapshotError::Format {
             found: 1,
-            expected: 2
+            expected: 3
+        })
+    );
+    // A format-2 snapshot (its configuration's fields flat, before they were grouped)
+    // reads, and is refused by its format: its flat fields would otherwise fall back
+    // to defaults and the layout would go on under another configuration.
+    let mut flat = json.clone();
+    flat["format"] = serde_json::json!(2);
+    for part in ["config", "applied"] {
+        flat[part] = serde_json::json!({
+            "default_radius": 16.0, "spring_model": "Forces", "contact_model": "Disks",
+            "collisions": true, "max_substeps": 16, "throw_window": 0.05, "link_bias": 1.0,
+        });
+    }
+    let snapshot: LayoutSnapshot<u32> = serde_json::from_value(flat).unwrap();
+    assert_eq!(
+        target.layout.restore(snapshot),
+        Err(SnapshotError::Format {
+            found: 2,
+            expected: 3
         })
     );
     // A node whose body is another node's.

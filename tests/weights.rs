@@ -5,6 +5,7 @@
 mod common;
 
 use common::*;
+use graph_canvas_layout::config::{Contacts, Springs};
 use graph_canvas_layout::config::{EdgeWeight, SpringModel};
 use graph_canvas_layout::{
     CanvasSceneInput, CanvasViewport, EdgeJoint, LayoutError, RapierLayoutConfig, RapierLayoutState,
@@ -33,8 +34,14 @@ fn springs_only() -> RapierLayoutConfig {
     // spring joints, solved one after the other, rest 1.2 units off it even with equal
     // weights, so the exact checks use forces.
     RapierLayoutConfig {
-        collisions: false,
-        spring_model: SpringModel::Forces,
+        contacts: Contacts {
+            enabled: false,
+            ..Default::default()
+        },
+        springs: Springs {
+            model: SpringModel::Forces,
+            ..Default::default()
+        },
         edge_joint: EdgeJoint::Spring {
             rest_length: 100.0,
             stiffness: 2_000.0,
@@ -56,7 +63,10 @@ fn a_node_between_two_anchors_rests_nearer_the_heavier_edge() {
             2.0,
             1.0,
             RapierLayoutConfig {
-                spring_model: model,
+                springs: Springs {
+                    model,
+                    ..springs_only().springs
+                },
                 ..springs_only()
             },
         );
@@ -74,7 +84,10 @@ fn mapped_to_length_a_heavier_edge_draws_longer() {
     // EdgeWeight::Length: rest lengths 2·100 and 1·100 at one stiffness, so
     // x - 200 = 400 - x - 100: x = 250.
     let config = RapierLayoutConfig {
-        edge_weight: EdgeWeight::Length,
+        springs: Springs {
+            weight: EdgeWeight::Length,
+            ..springs_only().springs
+        },
         ..springs_only()
     };
     let mut host = between(2.0, 1.0, config);
@@ -87,7 +100,10 @@ fn mapped_to_length_a_heavier_edge_draws_longer() {
     // A rod's length follows the weight as well.
     let rod = RapierLayoutConfig {
         edge_joint: EdgeJoint::Distance { length: 150.0 },
-        edge_weight: EdgeWeight::Length,
+        springs: Springs {
+            weight: EdgeWeight::Length,
+            ..springs_only().springs
+        },
         ..springs_only()
     };
     let mut edges = vec![edge(0, 1)];
@@ -210,7 +226,7 @@ fn weights_scale_force_directed_springs_too() {
     // no harder; cooled (springs at heat^0.7) it pulls four times as hard.
     let mut config = RapierLayoutConfig::force_directed();
     config.repulsion = None;
-    config.collisions = false;
+    config.contacts.enabled = false;
     let mut host = between(4.0, 1.0, config);
     host.settle(900);
     let x = host.pos(&1).x;

@@ -6,6 +6,7 @@
 
 use std::time::{Duration, Instant};
 
+use graph_canvas_layout::config::Throw;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::worker::LayoutWorker;
 use graph_canvas_layout::{
@@ -72,7 +73,10 @@ fn a_dragged_node_reads_where_the_host_put_it_in_the_same_frame_and_a_throw_flie
     // A throw window of 0.5 s: a host thread held up between two pointer moves on a busy
     // machine still throws (the default 0.05 s is three frames).
     let config = RapierLayoutConfig {
-        throw_window: 0.5,
+        throw: Throw {
+            window: 0.5,
+            ..RapierLayoutConfig::stress().throw
+        },
         ..RapierLayoutConfig::stress()
     };
     let mut worker = LayoutWorker::spawn(ring(8), config);

@@ -92,9 +92,9 @@ impl Bare {
         world.gravity = Vector::ZERO;
         if model != BareModel::RotatingEvents {
             world.integration_parameters = IntegrationParameters {
-                length_unit: config.length_unit,
-                num_solver_iterations: config.accuracy.settings().0,
-                normalized_max_linear_velocity: config.max_speed / config.length_unit,
+                length_unit: config.solver.length_unit,
+                num_solver_iterations: config.solver.accuracy.settings().0,
+                normalized_max_linear_velocity: config.solver.max_speed / config.solver.length_unit,
                 ..IntegrationParameters::default()
             };
         }

@@ -167,9 +167,9 @@ impl Demo {
             config.edge_joint = keep;
         }
         ui.label("accuracy");
-        let preset_accuracy = self.preset.config().accuracy;
-        for (name, accuracy) in accuracy_choices(config.accuracy, preset_accuracy) {
-            ui.radio_value(&mut config.accuracy, accuracy, name);
+        let preset_accuracy = self.preset.config().solver.accuracy;
+        for (name, accuracy) in accuracy_choices(config.solver.accuracy, preset_accuracy) {
+            ui.radio_value(&mut config.solver.accuracy, accuracy, name);
         }
         ui.label("edge joint");
         for (name, joint) in joint_choices(config.edge_joint) {
@@ -500,11 +500,11 @@ mod tests {
     fn the_accuracy_in_force_is_always_a_choice() {
         for preset in Preset::ALL {
             let config = preset.config();
-            let choices = accuracy_choices(config.accuracy, config.accuracy);
+            let choices = accuracy_choices(config.solver.accuracy, config.solver.accuracy);
             assert!(
-                choices.iter().any(|(_, a)| *a == config.accuracy),
+                choices.iter().any(|(_, a)| *a == config.solver.accuracy),
                 "{:?} ({preset:?}) not among {choices:?}",
-                config.accuracy
+                config.solver.accuracy
             );
         }
         // A custom accuracy of the host's own shows too, beside the preset's.
@@ -513,7 +513,7 @@ mod tests {
             internal_pgs_iterations: 1,
             substeps: 2,
         };
-        let choices = accuracy_choices(own, Preset::ForceDirected.config().accuracy);
+        let choices = accuracy_choices(own, Preset::ForceDirected.config().solver.accuracy);
         assert_eq!(choices.len(), 5, "{choices:?}");
         assert!(choices.iter().any(|(_, a)| *a == own));
     }

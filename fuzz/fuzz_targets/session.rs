@@ -17,6 +17,7 @@ mod common;
 
 use common::session::{run, run_resuming, Action};
 use common::FRAME;
+use graph_canvas_layout::config::{Contacts};
 
 /// Ids the session draws from: few, so actions meet the same nodes again.
 const IDS: u32 = 12;
@@ -51,12 +52,15 @@ fn config(u: &mut Unstructured) -> Result<RapierLayoutConfig> {
         } else {
             TopologyUpdate::Incremental
         },
-        collisions: if u.ratio(1, 4)? {
-            !base.collisions
-        } else {
-            base.collisions
+        contacts: Contacts {
+            enabled: if u.ratio(1, 4)? {
+                !base.contacts.enabled
+            } else {
+                base.contacts.enabled
+            },
+            events: u.ratio(1, 4)?,
+            ..base.contacts
         },
-        contact_events: u.ratio(1, 4)?,
         ..base
     })
 }

@@ -1,6 +1,6 @@
 //! Drags and the hand-off that throws: a dragged node's pointer velocity measured against
 //! the frame's real elapsed time, the velocity a release hands to the body, the flight
-//! of a thrown node ([`RapierLayoutConfig::flight_damping`](crate::RapierLayoutConfig::flight_damping)),
+//! of a thrown node ([`RapierLayoutConfig::throw.flight_damping`](crate::config::Throw::flight_damping)),
 //! and the drives that move kinematic bodies (dragged, or pinned and moved by the host)
 //! to the host's position over a call's substeps.
 
@@ -135,7 +135,7 @@ fn clamp_speed(v: Vector2D<f32>, max_speed: f32) -> Vector2D<f32> {
 }
 
 /// A thrown node, from its release until it rests: damped as
-/// [`flight_damping`](crate::RapierLayoutConfig::flight_damping) says until it turns
+/// [`flight_damping`](crate::config::Throw::flight_damping) says until it turns
 /// back, and keeping the layout from its cold stop until it slows to rest.
 #[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
 pub(super) struct Flight<N> {
@@ -154,7 +154,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             return;
         }
         let damping = finite_or(self.config.material.linear_damping, 0.0).max(0.0);
-        let rest_speed = self.config.rest_speed;
+        let rest_speed = self.config.rest.speed;
         let Some(world) = self.world.as_mut() else {
             self.flights.clear();
             return;

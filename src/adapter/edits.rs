@@ -66,7 +66,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     ) {
         let mut world = RapierSceneWorld::with_options(self.world_options());
         world.set_timestep(self.joint_dt);
-        world.set_springs_as_forces(self.config.spring_model == SpringModel::Forces);
+        world.set_springs_as_forces(self.config.springs.model == SpringModel::Forces);
         // A new world counts its versions from 0 again.
         self.forces.reset();
         // Contacts stay out of the first unfolding until the heat lets them in.
@@ -445,8 +445,8 @@ fn binding_for<N: Clone>(
 /// distinct neighbours: [`RapierLayoutConfig::edge_joint`], with a spring's stiffness
 /// and damping divided by `min(da, db)^exponent` and, in a stress layout, its rest
 /// length the world's hop length `hop`
-/// ([`RapierLayoutConfig::spring_degree_exponent`]; unusable exponents count as 0), then
-/// weighted as [`RapierLayoutConfig::edge_weight`] says.
+/// ([`Springs::degree_exponent`](crate::config::Springs::degree_exponent); unusable exponents count as 0), then
+/// weighted as [`Springs::weight`](crate::config::Springs::weight) says.
 fn edge_joint_for(
     config: &RapierLayoutConfig,
     hop: Option<f32>,
@@ -474,13 +474,13 @@ fn edge_joint_for(
         }
         None => base,
     };
-    shared.weighted(weight, config.edge_weight)
+    shared.weighted(weight, config.springs.weight)
 }
 
-/// [`RapierLayoutConfig::spring_degree_exponent`] when it scales anything: finite and
+/// [`Springs::degree_exponent`](crate::config::Springs::degree_exponent) when it scales anything: finite and
 /// not zero.
 fn degree_exponent(config: &RapierLayoutConfig) -> Option<f32> {
-    let exponent = config.spring_degree_exponent;
+    let exponent = config.springs.degree_exponent;
     (exponent.is_finite() && exponent.abs() > 0.0).then_some(exponent)
 }
 

@@ -8,7 +8,7 @@ use std::hash::Hash;
 
 use super::RapierLayout;
 use crate::config::cooling::Cooling;
-use crate::config::solver::ContactSoftness;
+use crate::config::ContactSoftness;
 
 #[cfg(doc)]
 use crate::RapierLayoutConfig;
@@ -159,7 +159,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     pub(super) fn heat_world(&mut self) -> FrameHeat {
         let config = &self.config;
         let heat = self.heat;
-        let mut contact_softness = config.contact_softness;
+        let mut contact_softness = config.contacts.softness;
         let Some(world) = self.world.as_mut() else {
             return FrameHeat {
                 scale: 1.0,

@@ -246,6 +246,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     }
 
     /// Whether the pool stays awake through the substeps ([`set_pool_awake`](Self::set_pool_awake)).
+    ///
+    /// Test and debug introspection, not part of the API: it may change in any release.
+    #[doc(hidden)]
     pub fn pool_awake(&self) -> bool {
         self.pool_awake
     }
@@ -267,6 +270,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// scene.nodes.push(CanvasNode::new(2, Point2D::new(50.0, 0.0)));
     /// assert!(layout.topology_changed(&scene, &extras));
     /// ```
+    ///
+    /// Test and debug introspection, not part of the API: it may change in any release.
+    #[doc(hidden)]
     pub fn topology_changed(
         &mut self,
         scene: &CanvasSceneInput<N>,
@@ -325,6 +331,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// layout.step(&scene, &mut state, 1.0 / 60.0, &Default::default(), &extras);
     /// assert!(layout.node_heat(&2).unwrap() > 10.0 * layout.heat().unwrap());
     /// ```
+    ///
+    /// Test and debug introspection, not part of the API: it may change in any release.
+    #[doc(hidden)]
     pub fn node_heat(&self, node: &N) -> Option<f32> {
         let alpha = self.heat()?;
         let world = self.world.as_ref()?;
@@ -375,7 +384,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     }
 
     /// Drains the contact events recorded since the last call (empty unless
-    /// [`RapierLayoutConfig::contact_events`] is on).
+    /// [`Contacts::events`](crate::config::Contacts::events) is on).
     pub fn drain_events(&mut self) -> Vec<SceneEvent<N>> {
         self.world
             .as_mut()
@@ -427,7 +436,7 @@ impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
     /// `dt` is the frame's real elapsed time (what drag speeds are measured against);
     /// the physics advances in fixed substeps of at most [`RapierLayoutState::dt`]
     /// (default 1/60 s) that cover it, up to
-    /// [`max_frame_time`](RapierLayoutConfig::max_frame_time). `viewport` is not read by
+    /// [`max_frame_time`](crate::config::FrameLimits::max_frame_time). `viewport` is not read by
     /// this layout (it is part of the [`Layout`] contract for layouts that lay out only
     /// what is visible): pass `&CanvasViewport::default()`.
     ///
@@ -448,7 +457,7 @@ impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
     }
 
     /// True when the layout was at rest after the last call: a world exists, no dynamic body moved faster
-    /// than [`RapierLayoutConfig::rest_speed`] for [`REST_TIME`] seconds of simulated
+    /// than [`RestDetection::speed`](crate::config::RestDetection::speed) for [`REST_TIME`] seconds of simulated
     /// time, nothing (a drag, a release, a host move, a topology change) disturbed it
     /// meanwhile, and every dynamic body is asleep; or a [`Cooling`](crate::config::Cooling)
     /// schedule has ended and halted the world. Once true, calls report no motion until

@@ -24,8 +24,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             return false;
         }
         let structural = applied.material != self.config.material
-            || applied.rapier_colliders() != self.config.rapier_colliders()
-            || applied.contact_events != self.config.contact_events
+            || applied.contacts.rapier_colliders() != self.config.contacts.rapier_colliders()
+            || applied.contacts.events != self.config.contacts.events
             || applied.default_radius.to_bits() != self.config.default_radius.to_bits();
         if self.forces.any_active(applied) && !self.forces.any_active(&self.config) {
             // Forces stay on bodies until reset: drop the last ones.
@@ -44,14 +44,14 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.world = None;
             self.topology_hash = 0;
         } else if applied.edge_joint != self.config.edge_joint
-            || applied.edge_weight != self.config.edge_weight
-            || applied.spring_model != self.config.spring_model
-            || applied.spring_degree_exponent.to_bits()
-                != self.config.spring_degree_exponent.to_bits()
+            || applied.springs.weight != self.config.springs.weight
+            || applied.springs.model != self.config.springs.model
+            || applied.springs.degree_exponent.to_bits()
+                != self.config.springs.degree_exponent.to_bits()
         {
             if let Some(world) = self.world.as_mut() {
                 world.clear_edge_joints();
-                world.set_springs_as_forces(self.config.spring_model == SpringModel::Forces);
+                world.set_springs_as_forces(self.config.springs.model == SpringModel::Forces);
             }
             // Forces the topology pass to re-insert every joint.
             self.topology_hash = 0;
@@ -75,8 +75,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// What the world models under this configuration.
     pub(super) fn world_options(&self) -> WorldOptions {
         WorldOptions {
-            collisions: self.config.rapier_colliders(),
-            contact_events: self.config.contact_events,
+            collisions: self.config.contacts.rapier_colliders(),
+            contact_events: self.config.contacts.events,
         }
     }
 }

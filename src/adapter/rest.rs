@@ -11,7 +11,7 @@ use crate::layout::DeltaMap;
 use crate::timestep::StepPlan;
 
 /// How long (simulated seconds) every dynamic body must stay under
-/// [`RapierLayoutConfig::rest_speed`](crate::RapierLayoutConfig::rest_speed) before
+/// [`RapierLayoutConfig::rest.speed`](crate::config::RestDetection::speed) before
 /// [`Layout::is_converged`](crate::Layout::is_converged) says so; the same time rapier
 /// waits before putting a body to sleep.
 pub const REST_TIME: f32 = 0.5;
@@ -30,7 +30,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// layout reports no motion at all until something disturbs it; or halted by the
     /// cold stop.
     pub(super) fn track_rest(&mut self, disturbed: bool, report: &FrameReport<N>, simulated: f32) {
-        let calm = report.max_speed.is_finite() && report.max_speed <= self.config.rest_speed;
+        let calm = report.max_speed.is_finite() && report.max_speed <= self.config.rest.speed;
         if disturbed || !calm {
             self.rest.calm_time = 0.0;
         } else {
@@ -80,7 +80,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         heat.cold_time += simulated;
         if let Some(world) = self.world.as_mut() {
             if heat.cold_time >= REST_TIME {
-                if self.config.separates_disks() && world.contacts_enabled() {
+                if self.config.contacts.separates_disks() && world.contacts_enabled() {
                     // No overlap is left standing.
                     self.forces.part_overlaps(world);
                     super::node_forces::hold_locked_axes(world, &self.forces.targets.locks);

@@ -85,9 +85,11 @@ impl<N> LayoutSnapshot<N> {
     /// The snapshot format this build writes and reads. A snapshot of another format
     /// is refused ([`SnapshotError::Format`]); within a format, a snapshot restores in
     /// any build of the same rapier version, and continues bit for bit in the build that
-    /// took it. Format 2 seals rapier's state ([`RapierLayout::restore`]); format 1
-    /// snapshots read but are refused.
-    pub const FORMAT: u32 = 2;
+    /// took it. Format 3 holds the grouped configuration ([`RapierLayoutConfig`]'s
+    /// `springs`, `contacts`, `frame`, `solver`, `throw` and `rest`); format 2 (flat
+    /// configuration fields) and format 1 (rapier's state not sealed) snapshots read but
+    /// are refused.
+    pub const FORMAT: u32 = 3;
 
     /// The configuration the layout ran under (a restore puts it back).
     pub fn config(&self) -> &RapierLayoutConfig {
@@ -212,7 +214,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// - **Settings** (the configuration, heat, schedule) are used as any host setting
     ///   is: a value out of range is clamped where it is read, and the counts that bound
     ///   a call's work are capped (see [`Accuracy::Custom`](crate::config::Accuracy::Custom) and
-    ///   [`max_substeps`](RapierLayoutConfig::max_substeps)).
+    ///   [`max_substeps`](crate::config::FrameLimits::max_substeps)).
     ///
     /// A restore costs these checks, the seals' hashes and building the id lookups,
     /// linear in the snapshot's size: `docs/performance.md` (Keep and resume) gives the

@@ -26,8 +26,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let mut plan = StepPlan::new(
             dt,
             state.dt,
-            self.config.max_frame_time,
-            self.config.max_substeps,
+            self.config.frame.max_frame_time,
+            self.config.frame.max_substeps,
         );
         plan.substeps = plan.substeps.saturating_mul(substeps);
         plan.substep_dt /= substeps as f32;
@@ -39,8 +39,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// rapier's solver iterations become substeps of the layout's, so that contacts
     /// (and the other forces) are worked out anew for each.
     fn solver_settings(&self) -> SolverSettings {
-        let settings = self.config.accuracy.solver_settings();
-        if self.config.separates_disks() {
+        let settings = self.config.solver.accuracy.solver_settings();
+        if self.config.contacts.separates_disks() {
             SolverSettings {
                 solver_iterations: 1,
                 substeps: settings
@@ -61,12 +61,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let Some(world) = self.world.as_mut() else {
             return;
         };
-        let length_unit = positive_or(config.length_unit, 1.0);
+        let length_unit = positive_or(config.solver.length_unit, 1.0);
         let params = world.integration_parameters_mut();
         params.dt = plan.substep_dt;
         params.length_unit = length_unit;
-        params.normalized_max_linear_velocity = if config.max_speed > 0.0 {
-            config.max_speed / length_unit
+        params.normalized_max_linear_velocity = if config.solver.max_speed > 0.0 {
+            config.solver.max_speed / length_unit
         } else {
             f32::MAX
         };

@@ -179,7 +179,7 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
                     current,
                     body_pos,
                     host,
-                    self.config.throw_window,
+                    self.config.throw.window,
                 );
                 if thrown {
                     self.take_off(s, &node.id);
@@ -216,8 +216,8 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
                 host,
                 was_dragging,
                 self.frame_dt,
-                self.config.throw_window,
-                self.config.max_speed,
+                self.config.throw.window,
+                self.config.solver.max_speed,
             );
             disturbed = true;
         }
@@ -231,14 +231,14 @@ impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
     }
 
     /// A node thrown this call flies with
-    /// [`flight_damping`](RapierLayoutConfig::flight_damping) until it turns back.
+    /// [`flight_damping`](crate::config::Throw::flight_damping) until it turns back.
     fn take_off(&mut self, s: usize, id: &N) {
-        let Some(damping) = self.config.flight_damping else {
+        let Some(damping) = self.config.throw.flight_damping else {
             return;
         };
         let v = self.world.body_at(s).linvel();
         let v = Vector2D::new(v.x, v.y);
-        if v.length() <= self.config.rest_speed || !v.is_finite() {
+        if v.length() <= self.config.rest.speed || !v.is_finite() {
             return;
         }
         self.world

@@ -36,7 +36,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         awake_before: usize,
     ) -> FrameReport<N> {
         self.matching.moved_mut().clear();
-        let epsilon = self.config.delta_epsilon.max(0.0);
+        let epsilon = self.config.rest.delta_epsilon.max(0.0);
         let epsilon_sq = epsilon * epsilon;
         // Allocated on the first delta: a resting layout returns an empty map for free.
         let mut report = FrameReport {

@@ -1,10 +1,11 @@
-//! What an edge becomes in the physics world ([`EdgeJoint`]), how its spring is solved
-//! ([`SpringModel`]) and which body kind a node gets ([`BodyKindPolicy`]). The rapier
-//! joints themselves are built in `world::rapier_joint`, springs applied as forces in
-//! `forces/springs.rs`.
+//! What an edge becomes in the physics world ([`EdgeJoint`]) and which body kind a node
+//! gets ([`BodyKindPolicy`]). How springs are solved and tuned is the springs group
+//! (`springs.rs`); the rapier joints themselves are built in `world::rapier_joint`,
+//! springs applied as forces in `forces/springs.rs`.
 
 use serde::{Deserialize, Serialize};
 
+use crate::config::EdgeWeight;
 use crate::world::bindings::EdgeJointSpec;
 
 /// What each edge becomes in the physics world.
@@ -122,31 +123,6 @@ impl EdgeJoint {
     }
 }
 
-/// What [`CanvasEdge::weight`](crate::CanvasEdge::weight) does to an edge's joint. In
-/// both mappings weight 1 leaves the joint as [`RapierLayoutConfig::edge_joint`](crate::RapierLayoutConfig::edge_joint)
-/// (and the degree share) make it, bit for bit, and weight 0 gives the edge no joint:
-/// it stays topology (the topology hash, the degrees) and exerts nothing. A negative or
-/// non-finite weight is bad input ([`LayoutError::InvalidEdgeWeight`](crate::LayoutError::InvalidEdgeWeight));
-/// `step` treats it as 0 for that call. A weight edit re-tunes that joint in place: no
-/// rebuild, and the bodies keep their motion.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
-pub enum EdgeWeight {
-    /// Weights are strengths (similarities, affinities, co-occurrence counts): a
-    /// spring's stiffness and damping are multiplied by the weight, so weight 2 pulls
-    /// twice as hard as weight 1 (d3-force's `link.strength`), and a rope's stiffness
-    /// past its length likewise. A rod ([`EdgeJoint::Distance`]) is rigid whatever its
-    /// weight. A node held between two springs of weights `w1` and `w2` and the same
-    /// rest length `L`, their anchors `D` apart, rests at `x = (w1 L + w2 (D - L)) /
-    /// (w1 + w2)` from the first anchor: nearer the heavier edge's anchor.
-    #[default]
-    Strength,
-    /// Weights are lengths (distances, dissimilarities, road lengths): a spring's rest
-    /// length, a rope's length and a rod's length are multiplied by the weight, so weight
-    /// 2 draws the edge twice as long (vis-network's `edges.length`, d3-force's
-    /// `link.distance`), at the configured stiffness.
-    Length,
-}
-
 impl From<EdgeJointSpec> for EdgeJoint {
     fn from(spec: EdgeJointSpec) -> Self {
         EdgeJoint::Spring {
@@ -173,31 +149,4 @@ pub enum BodyKindPolicy {
     /// Every node is kinematic: the layout only follows the host (no physics motion,
     /// no deltas). Useful to keep a world for contact queries without simulating.
     AllKinematic,
-}
-
-/// How [`EdgeJoint::Spring`] edges are solved. Ropes and rods are rapier joints either
-/// way.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
-pub enum SpringModel {
-    /// Each spring is a rapier spring joint, solved implicitly with the contacts in
-    /// rapier's constraint solver, so a stretched spring and a contact that resists it
-    /// are solved together. A connected graph is one rapier island: anything that wakes
-    /// one node wakes them all. Rapier solves this joint kind one at a time (it has no
-    /// SIMD path for it), which makes springs a large part of a big graph's step.
-    #[default]
-    Joints,
-    /// Springs are forces of the layout's own, evaluated for every edge in one loop per
-    /// substep beside the other body forces. Each body's total force is then divided by
-    /// `1 + (dt² k + dt c) / m`, with `k` and `c` the stiffness and damping of its
-    /// springs: an implicit Euler step on the body's own springs, so springs as stiff as
-    /// the timestep resolves stay stable, and a body still rests where its forces
-    /// balance. Rapier then sees no joint between nodes: its islands are groups of nodes
-    /// in contact, so a disturbance wakes only the nodes it reaches, and the spring
-    /// loop costs a few nanoseconds per edge. The price: springs and contacts are no
-    /// longer solved together (a spring pressing two disks into each other is resolved
-    /// over a few steps by the contact), and a spring's pull on its two ends comes one
-    /// substep late to rapier's solver. [`RapierSceneWorld::joint_count`](crate::RapierSceneWorld::joint_count)
-    /// still counts these springs;
-    /// [`rapier_joint_count`](crate::RapierSceneWorld::rapier_joint_count) does not.
-    Forces,
 }

@@ -2,12 +2,10 @@
 //! [`RapierLayoutConfig::force_directed_fast`], d3-force's default simulation in
 //! physical units. The plain [`RapierLayoutConfig::default`] lives with the fields.
 
-use crate::config::cooling::Cooling;
-use crate::config::edge_joint::{EdgeJoint, SpringModel};
-use crate::config::solver::{Accuracy, ContactModel, ContactSoftness};
-use crate::config::stress::StressModel;
-use crate::config::RapierLayoutConfig;
-use crate::forces::many_body::Repulsion;
+use crate::config::{
+    Accuracy, ContactModel, ContactSoftness, Contacts, Cooling, EdgeJoint, RapierLayoutConfig,
+    Repulsion, Solver, SpringModel, Springs, StressModel, Throw,
+};
 use crate::world::bindings::PhysicsMaterial;
 
 impl RapierLayoutConfig {
@@ -20,7 +18,7 @@ impl RapierLayoutConfig {
     /// node mass (density 0.005 × π 16² ≈ 4.0) its forces become:
     /// - links of distance 100 with strength `1 / min(degree)`: springs of rest length
     ///   100, stiffness 7,200 divided by `min(degree)^0.6`
-    ///   ([`spring_degree_exponent`](Self::spring_degree_exponent) 0.6), no spring
+    ///   ([`Springs::degree_exponent`] 0.6), no spring
     ///   damping. 7,200 is what a 1/60 s step resolves between two default nodes
     ///   ([`max_resolved_stiffness`](crate::world::max_resolved_stiffness)), d3's link at full
     ///   heat. d3's full share (exponent 1) leaves hub edges too soft here, because
@@ -28,7 +26,7 @@ impl RapierLayoutConfig {
     ///   are forces of the layout's own ([`SpringModel::Forces`]): one loop over the
     ///   edges, where rapier solves spring joints one at a time;
     /// - d3's link bias, the end with fewer neighbours pulled harder
-    ///   ([`link_bias`](Self::link_bias) 1);
+    ///   ([`Springs::link_bias`] 1);
     /// - many-body strength −30: [`Repulsion`] of strength 430,000 (`30 × m × 60²`),
     ///   theta 0.9, with a gentle centre pull;
     /// - velocity decay 0.4 per tick would be linear damping 40 per second; half of it,
@@ -60,7 +58,7 @@ impl RapierLayoutConfig {
     ///   node's springs pull with 1 % of their strength after the release
     ///   ([`Cooling::coasting_spring_scale`]);
     /// - a thrown node is damped at 1/s until it turns back
-    ///   ([`flight_damping`](Self::flight_damping) 1): a throw of 1,800 units/s flies
+    ///   ([`Throw::flight_damping`] 1): a throw of 1,800 units/s flies
     ///   135 to 180 units further and is drawn back at up to about 550 units/s.
     ///
     /// Every shipped graph comes to rest (every body asleep, or halted at the end of the
@@ -88,10 +86,21 @@ impl RapierLayoutConfig {
                 linear_damping: 20.0,
                 ..defaults.material
             },
-            spring_model: SpringModel::Forces,
-            contact_model: ContactModel::Disks,
+            springs: Springs {
+                model: SpringModel::Forces,
+                degree_exponent: 0.6,
+                link_bias: 1.0,
+                ..defaults.springs
+            },
+            contacts: Contacts {
+                model: ContactModel::Disks,
+                softness: ContactSoftness {
+                    natural_frequency: 240.0,
+                    damping_ratio: 1.0,
+                },
+                ..defaults.contacts
+            },
             repulsion: Some(Repulsion::default()),
-            spring_degree_exponent: 0.6,
             cooling: Some(Cooling {
                 duration: 4.5,
                 spring_exponent: 0.7,
@@ -101,16 +110,17 @@ impl RapierLayoutConfig {
                 reheat_hops: Some(1),
                 ..Cooling::default()
             }),
-            link_bias: 1.0,
-            flight_damping: Some(1.0),
-            contact_softness: ContactSoftness {
-                natural_frequency: 240.0,
-                damping_ratio: 1.0,
+            throw: Throw {
+                flight_damping: Some(1.0),
+                ..defaults.throw
             },
-            accuracy: Accuracy::Custom {
-                solver_iterations: 1,
-                internal_pgs_iterations: 3,
-                substeps: 1,
+            solver: Solver {
+                accuracy: Accuracy::Custom {
+                    solver_iterations: 1,
+                    internal_pgs_iterations: 3,
+                    substeps: 1,
+                },
+                ..defaults.solver
             },
             ..defaults
         }
@@ -133,21 +143,30 @@ impl RapierLayoutConfig {
     /// use graph_canvas_layout::RapierLayoutConfig;
     /// use graph_canvas_layout::config::Accuracy;
     /// let config = RapierLayoutConfig::force_directed_fast();
-    /// assert!(!config.collisions && config.accuracy == Accuracy::Fast);
+    /// assert!(!config.contacts.enabled && config.solver.accuracy == Accuracy::Fast);
     /// assert_eq!(config.repulsion, RapierLayoutConfig::force_directed().repulsion);
     /// ```
     pub fn force_directed_fast() -> Self {
         let directed = Self::force_directed();
         Self {
-            collisions: false,
-            spring_degree_exponent: 1.0,
-            link_bias: 0.0,
+            contacts: Contacts {
+                enabled: false,
+                ..directed.contacts
+            },
+            springs: Springs {
+                degree_exponent: 1.0,
+                link_bias: 0.0,
+                ..directed.springs
+            },
             cooling: directed.cooling.map(|cooling| Cooling {
                 spring_exponent: 1.0,
                 coasting_spring_scale: 0.05,
                 ..cooling
             }),
-            accuracy: Accuracy::Fast,
+            solver: Solver {
+                accuracy: Accuracy::Fast,
+                ..directed.solver
+            },
             ..directed
         }
     }
@@ -193,8 +212,11 @@ impl RapierLayoutConfig {
         let directed = Self::force_directed();
         Self {
             repulsion: None,
-            spring_degree_exponent: 0.0,
-            link_bias: 0.0,
+            springs: Springs {
+                degree_exponent: 0.0,
+                link_bias: 0.0,
+                ..directed.springs
+            },
             cooling: directed.cooling.map(|cooling| Cooling {
                 duration: 2.0,
                 spring_exponent: 1.0,

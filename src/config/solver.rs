@@ -1,11 +1,8 @@
-//! The solver's speed/accuracy trade ([`Accuracy`]), who keeps disks apart
-//! ([`ContactModel`]) and how firmly rapier's contacts push ([`ContactSoftness`]). The
-//! adapter copies them into rapier's integration parameters once per call.
+//! The solver group ([`Solver`]): the speed/accuracy trade ([`Accuracy`]), rapier's
+//! length unit and the speed cap. The frame plan copies them into rapier's integration
+//! parameters once per call (`adapter/substeps.rs`).
 
 use serde::{Deserialize, Serialize};
-
-#[cfg(doc)]
-use crate::BodyKindPolicy;
 
 /// How hard the solver works per step. Each level fixes rapier's solver iterations,
 /// internal PGS iterations and substeps per timestep; cost grows about linearly with
@@ -104,102 +101,42 @@ impl Accuracy {
     }
 }
 
-/// How firmly contacts between nodes push overlapping disks apart: rapier's contact
-/// softness, a spring per contact with this natural frequency and damping ratio.
-///
-/// A contact removes a fraction `erp = ω dt / (ω dt + 2ζ)` of the overlap per step
-/// (`ω = 2π × natural_frequency`). Rapier's default (30 Hz, ζ = 10) removes 14 % per
-/// 1/60 s step: soft, forgiving contacts that let stiff springs press disks into each
-/// other. 240 Hz with ζ = 1 removes 93 %: nearly rigid, so no spring can squeeze two
-/// nodes together, at the price of livelier collisions. Contacts with fixed bodies
-/// (pinned nodes under [`BodyKindPolicy::PinnedStatic`]) get twice the frequency, as
-/// rapier's own defaults do (60 Hz against 30 Hz).
+/// How hard rapier's solver works and the scale it works at. Every field takes effect
+/// at the next call.
 ///
 /// # Example
 /// ```
-/// use graph_canvas_layout::config::ContactSoftness;
-/// let firm = ContactSoftness { natural_frequency: 240.0, damping_ratio: 1.0 };
-/// assert!(firm.overlap_removed_per_step(1.0 / 60.0) > 0.9);
-/// assert!(ContactSoftness::default().overlap_removed_per_step(1.0 / 60.0) < 0.15);
+/// use graph_canvas_layout::config::{Accuracy, Solver};
+/// use graph_canvas_layout::RapierLayoutConfig;
+/// let config = RapierLayoutConfig {
+///     solver: Solver { accuracy: Accuracy::Fast, ..Solver::default() },
+///     ..RapierLayoutConfig::default()
+/// };
+/// assert_eq!(config.solver.accuracy.solver_settings().solver_iterations, 1);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
-pub struct ContactSoftness {
-    /// Natural frequency of the contact spring, in Hz. Higher is firmer. Default: `30.0`.
-    pub natural_frequency: f32,
-    /// Damping ratio of the contact spring. Lower corrects overlap faster and bounces
-    /// more. Default: `10.0`.
-    pub damping_ratio: f32,
+pub struct Solver {
+    /// The speed/accuracy trade of the solver; see [`Accuracy`] for what each preset
+    /// costs and buys. Default: [`Accuracy::Balanced`].
+    pub accuracy: Accuracy,
+    /// Rapier's `length_unit`: the size of a typical object in world units. Rapier
+    /// scales its tolerances (contact slop, sleep threshold, speed cap) by it. Canvas
+    /// nodes are about 30 pixels across and edges about 100, so the default suits pixel
+    /// worlds. Default: `100.0`.
+    pub length_unit: f32,
+    /// Speed cap in world units per second; rapier clamps faster bodies each substep.
+    /// A throw faster than this flies at the cap. Default: `40_000.0` (rapier's own
+    /// 400 lengths/s at `length_unit` 100).
+    pub max_speed: f32,
 }
 
-impl Default for ContactSoftness {
-    /// Rapier's own contact softness: 30 Hz, ζ = 10.
+impl Default for Solver {
     fn default() -> Self {
         Self {
-            natural_frequency: 30.0,
-            damping_ratio: 10.0,
+            accuracy: Accuracy::Balanced,
+            length_unit: 100.0,
+            max_speed: 40_000.0,
         }
     }
-}
-
-impl ContactSoftness {
-    /// The fraction of an overlap one step of `dt` seconds removes (rapier's ERP).
-    pub fn overlap_removed_per_step(self, dt: f32) -> f32 {
-        self.coefficients().erp(dt)
-    }
-
-    /// Rapier's coefficients for contacts with fixed bodies: twice the frequency.
-    pub(crate) fn static_coefficients(self) -> rapier2d::prelude::SpringCoefficients<f32> {
-        let c = self.coefficients();
-        rapier2d::prelude::SpringCoefficients::new(c.natural_frequency * 2.0, c.damping_ratio)
-    }
-
-    /// Rapier's coefficients, with unusable values replaced by rapier's defaults.
-    pub(crate) fn coefficients(self) -> rapier2d::prelude::SpringCoefficients<f32> {
-        let defaults = Self::default();
-        let frequency = if self.natural_frequency.is_finite() && self.natural_frequency > 0.0 {
-            // Rapier's own rigid joints use 1e6; beyond, 2π f overflows towards infinity.
-            self.natural_frequency.min(1.0e6)
-        } else {
-            defaults.natural_frequency
-        };
-        let ratio = if self.damping_ratio.is_finite() && self.damping_ratio >= 0.0 {
-            self.damping_ratio.min(1.0e6)
-        } else {
-            defaults.damping_ratio
-        };
-        rapier2d::prelude::SpringCoefficients::new(frequency, ratio)
-    }
-}
-
-/// Who keeps nodes from overlapping when
-/// [`RapierLayoutConfig::collisions`](crate::RapierLayoutConfig::collisions) is on.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
-pub enum ContactModel {
-    /// Rapier's colliders and contact constraints: any shape a host builds through the
-    /// world wrapper, contact events, friction and restitution, contacts solved together
-    /// with rapier joints. Rapier keeps pair bookkeeping for every two disks that meet
-    /// or part, which dominates the step of a large graph in motion.
-    #[default]
-    Rapier,
-    /// The layout's own disk separation (d3-force's `forceCollide`, made firm): every
-    /// substep the pairs of disks that may touch are found on a uniform grid and solved
-    /// as soft contacts the way Box2D v3 solves its own (warm-started impulses, up to
-    /// eight passes before the step and four after it that take out the push's speed,
-    /// so parted disks stop instead of flying apart), at the frequency and damping of
-    /// [`ContactSoftness`]. Impulses only push. Dragged and pinned nodes push and do not
-    /// give way; a sleeping node pressed into wakes. When a cooling schedule halts the
-    /// world, the overlaps still held are projected apart on positions first. No
-    /// colliders exist in rapier, so its broad and narrow phases have nothing to do:
-    /// with the other [`force_directed`](crate::RapierLayoutConfig::force_directed)
-    /// settings, `n10000_e25000` steps in about a third of the time it takes with
-    /// rapier's contacts, and rests with fewer overlapping pairs (`docs/performance.md`).
-    /// Disks and label boxes ([`NodeShape`](crate::NodeShape)) are parted by their
-    /// outlines (a box with boxes costs more than a disk with disks, `docs/shapes.md`).
-    /// The trade: no
-    /// friction, restitution or contact events (with
-    /// [`RapierLayoutConfig::contact_events`](crate::RapierLayoutConfig::contact_events)
-    /// on, contacts are rapier's), and contacts are not solved together with rapier
-    /// joints (ropes and rods) in the same pass.
-    Disks,
 }

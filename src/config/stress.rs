@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 
 /// Where a stress layout's first world starts.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[non_exhaustive]
 pub enum StressStart {
     /// A layout of its own, whatever positions the scene holds (a spiral, one point, a
     /// scatter): each component by pivot MDS refined by stress SGD passes, packed side

@@ -265,7 +265,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
     /// Whether `config` asks for any force on bodies, or for the layout's own disk
     /// separation.
     pub(crate) fn any_active(&self, config: &RapierLayoutConfig) -> bool {
-        config.separates_disks()
+        config.contacts.separates_disks()
             || config.stress.is_some()
             || config.repulsion.is_some()
             || BodyForce::<N>::is_active(&self.springs, config, &self.targets)
@@ -346,7 +346,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             &mut self.sums.springs,
             &mut self.sums.forces,
         );
-        let separate = config.separates_disks() && world.contacts_enabled();
+        let separate = config.contacts.separates_disks() && world.contacts_enabled();
         self.combine(world, law, separate.then_some(dt));
         if separate {
             let watch = Stopwatch::start(&self.profile);

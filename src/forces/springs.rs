@@ -5,7 +5,7 @@
 //! A spring pulls both ends with the same force `k x`. d3-force's link instead moves its
 //! source by `(1 - b)` and its target by `b` of the correction, `b` being the source's
 //! share of the two degrees, so the end with fewer neighbours moves more. With
-//! [`RapierLayoutConfig::link_bias`](crate::RapierLayoutConfig::link_bias) `g`, end `a`
+//! [`RapierLayoutConfig::springs.link_bias`](crate::config::Springs::link_bias) `g`, end `a`
 //! of a spring takes `(1 + g s) k x` toward `b` and end `b` takes `(1 - g s) k x` toward
 //! `a`, with `s = (d_b - d_a) / (d_a + d_b)`: at `g = 1` end `a` feels
 //! `2 d_b / (d_a + d_b) · k x`, d3's share of twice the spring force. Springs that are
@@ -71,13 +71,14 @@ const FEW_PUSHED: usize = 16;
 
 impl<N: Clone + Eq + Hash> BodyForce<N> for SpringForce {
     fn is_active(&self, config: &RapierLayoutConfig, _: &NodeTargets) -> bool {
-        config.spring_model == SpringModel::Forces || finite_or(config.link_bias, 0.0) > 0.0
+        config.springs.model == SpringModel::Forces
+            || finite_or(config.springs.link_bias, 0.0) > 0.0
     }
 
     fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
         let as_forces = frame.world.springs_as_forces();
         // Clamped: higher gains are explicit forces stiffer than the step resolves.
-        let gain = finite_or(frame.config.link_bias, 0.0).clamp(0.0, 1.0);
+        let gain = finite_or(frame.config.springs.link_bias, 0.0).clamp(0.0, 1.0);
         if !as_forces && gain == 0.0 {
             return;
         }

@@ -137,7 +137,7 @@ pub struct CanvasEdge<N> {
     pub target: N,
     /// The edge's weight; `1.0` by default. The layout scales the edge's joint by it,
     /// its strength or its length as
-    /// [`RapierLayoutConfig::edge_weight`](crate::RapierLayoutConfig::edge_weight) says;
+    /// [`RapierLayoutConfig::springs.weight`](crate::config::Springs::weight) says;
     /// 0 keeps the edge as topology only. Negative or non-finite weights are bad input.
     pub weight: f32,
 }
@@ -153,7 +153,7 @@ impl<N> CanvasEdge<N> {
     }
 
     /// This edge with weight `weight`
-    /// ([`RapierLayoutConfig::edge_weight`](crate::RapierLayoutConfig::edge_weight) says
+    /// ([`RapierLayoutConfig::springs.weight`](crate::config::Springs::weight) says
     /// what it scales).
     ///
     /// # Example

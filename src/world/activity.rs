@@ -21,6 +21,9 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     }
 
     /// Number of dynamic bodies that are awake.
+    ///
+    /// Test and debug introspection, not part of the API: it may change in any release.
+    #[doc(hidden)]
     pub fn awake_dynamic_count(&self) -> usize {
         self.bodies
             .iter()
@@ -61,13 +64,6 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             }
         }
         halted
-    }
-
-    /// The former name of [`halt_dynamic_bodies`](Self::halt_dynamic_bodies), which it
-    /// now calls: rapier's own sleep left the bodies' island simulated.
-    #[deprecated(note = "use `halt_dynamic_bodies`: rapier's sleep left the island simulated")]
-    pub fn sleep_dynamic_bodies(&mut self) -> usize {
-        self.halt_dynamic_bodies()
     }
 
     /// Puts every dynamic body to sleep (rapier's `RigidBody::sleep`: it stays asleep
@@ -213,6 +209,9 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     /// Whether contacts take part in the simulation; see
     /// [`set_contacts_enabled`](Self::set_contacts_enabled).
+    ///
+    /// Test and debug introspection, not part of the API: it may change in any release.
+    #[doc(hidden)]
     pub fn contacts_enabled(&self) -> bool {
         self.contacts_enabled
     }

@@ -50,6 +50,7 @@ impl Default for PhysicsMaterial {
 
 /// The collision shape of a node.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub enum ColliderSpec {
     /// A disk.
     Circle {

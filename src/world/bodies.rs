@@ -169,7 +169,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     }
 
     /// Clears the forces added to every body (they persist across steps until cleared).
-    pub fn reset_forces(&mut self) {
+    pub(crate) fn reset_forces(&mut self) {
         for slot in 0..self.slots.len() {
             self.body_at_mut(slot).reset_forces(true);
         }

@@ -175,7 +175,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     /// Keeps only the joints for which `keep(a, b)` is true, visiting them in insertion
     /// order (swap removals aside), so the same calls give the same world.
-    pub fn retain_edge_joints(&mut self, mut keep: impl FnMut(&N, &N) -> bool) {
+    pub(crate) fn retain_edge_joints(&mut self, mut keep: impl FnMut(&N, &N) -> bool) {
         let mut i = 0;
         while i < self.joints.len() {
             if keep(&self.joints[i].a, &self.joints[i].b) {
@@ -187,7 +187,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     }
 
     /// Removes every joint, keeping the bodies and their motion.
-    pub fn clear_edge_joints(&mut self) {
+    pub(crate) fn clear_edge_joints(&mut self) {
         self.version += 1;
         for joint in self.joints.drain(..) {
             if let Some(handle) = joint.handle {
@@ -204,7 +204,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     /// The joint between `a` and `b` (either order) as it was built, before the
     /// stiffness limit: with
-    /// [`RapierLayoutConfig::spring_degree_exponent`](crate::RapierLayoutConfig::spring_degree_exponent)
+    /// [`RapierLayoutConfig::springs.degree_exponent`](crate::config::Springs::degree_exponent)
     /// a spring's share of the configured stiffness shows here. `None` without a joint.
     ///
     /// # Example
@@ -311,7 +311,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// Applies springs as forces of the layout's own (`true`) or as rapier joints
     /// (`false`), moving the existing springs in place; bodies keep their motion. See
     /// [`SpringModel`](crate::config::SpringModel).
-    pub fn set_springs_as_forces(&mut self, forces: bool) {
+    pub(crate) fn set_springs_as_forces(&mut self, forces: bool) {
         if forces == self.spring_forces {
             return;
         }
@@ -336,6 +336,9 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     /// Whether springs are applied as forces (see
     /// [`set_springs_as_forces`](Self::set_springs_as_forces)).
+    ///
+    /// Test and debug introspection, not part of the API: it may change in any release.
+    #[doc(hidden)]
     pub fn springs_as_forces(&self) -> bool {
         self.spring_forces
     }

@@ -15,6 +15,7 @@ use super::{RapierSceneWorld, MAX_PENDING_EVENTS};
 
 /// Something that happened in the world, named by node ids.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[non_exhaustive]
 pub enum SceneEvent<N> {
     /// Two nodes' colliders started touching.
     ContactBegin {

@@ -300,7 +300,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     }
 
     /// Records the topology hash this world now stands for.
-    pub fn set_topology_hash(&mut self, hash: u64) {
+    pub(crate) fn set_topology_hash(&mut self, hash: u64) {
         self.topology_hash = hash;
     }
 

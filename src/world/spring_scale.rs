@@ -221,6 +221,9 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// The factor [`set_spring_scale`](Self::set_spring_scale) last set, or the `near`
     /// factor of [`set_spring_scale_by_stretch`](Self::set_spring_scale_by_stretch)
     /// (1 by default).
+    ///
+    /// Test and debug introspection, not part of the API: it may change in any release.
+    #[doc(hidden)]
     pub fn spring_scale(&self) -> f32 {
         self.spring_scale.near
     }
@@ -228,6 +231,9 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// The factor every spring's stiffness and damping has now: what the last
     /// [`set_spring_scale_by_stretch`](Self::set_spring_scale_by_stretch) chose (1 by
     /// default).
+    ///
+    /// Test and debug introspection, not part of the API: it may change in any release.
+    #[doc(hidden)]
     pub fn applied_spring_scale(&self) -> f32 {
         self.spring_scale.applied
     }

@@ -293,7 +293,7 @@ pub fn check_joints(host: &Host<u32>, before: &CanvasSceneInput<u32>) -> Result<
     let world = host.layout.world().expect("a world");
     let config = &host.layout.config;
     ensure_eq!(
-        config.edge_weight,
+        config.springs.weight,
         EdgeWeight::Strength,
         "the checker knows strengths"
     );
@@ -326,8 +326,9 @@ pub fn check_joints(host: &Host<u32>, before: &CanvasSceneInput<u32>) -> Result<
                 rest_length,
                 stiffness,
                 damping,
-            } if config.spring_degree_exponent > 0.0 => {
-                let share = (degree[&a].min(degree[&b]) as f32).powf(config.spring_degree_exponent);
+            } if config.springs.degree_exponent > 0.0 => {
+                let share =
+                    (degree[&a].min(degree[&b]) as f32).powf(config.springs.degree_exponent);
                 Some(EdgeJoint::Spring {
                     rest_length,
                     stiffness: stiffness / share,

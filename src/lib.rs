@@ -162,6 +162,7 @@
 
 mod adapter;
 pub mod config;
+mod contacts;
 mod forces;
 mod input;
 mod layout;
@@ -169,6 +170,7 @@ mod parallel;
 pub mod profile;
 pub mod quality;
 mod sanitize;
+mod sort;
 mod stress;
 mod timestep;
 pub mod worker;

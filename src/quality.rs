@@ -7,7 +7,7 @@ use std::hash::Hash;
 
 use euclid::default::{Point2D, Vector2D};
 
-use crate::forces::collide::shapes::gap;
+use crate::contacts::shapes::gap;
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::layout::IdHasher;
 use crate::world::bindings::ColliderSpec;

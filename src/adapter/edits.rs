@@ -15,6 +15,7 @@ use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::input::topology::Topology;
 use crate::input::validation::node_is_valid;
 use crate::layout::{IdHasher, LayoutExtras};
+use crate::stress::{start_world, WorldOrigin};
 use crate::world::bindings::{ColliderSpec, NodeAvatarBinding, SceneBodyKind};
 use crate::world::nodes::body_mass;
 use crate::world::rapier_joint::scaled_spring;
@@ -80,7 +81,15 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             &mut Vec::new(),
         );
         // NOTE: before the joints, which rest at the hop length it chooses.
-        let model = self.start_stress(&mut world, scene, topology, extras);
+        let origin = WorldOrigin {
+            previous_hop: self.world.as_ref().and_then(RapierSceneWorld::hop_length),
+            first: self.rebuilds == 0,
+            cold_start: self.cold_start,
+        };
+        let model = self
+            .config
+            .stress
+            .map(|stress| start_world(stress, origin, &mut world, scene, topology, extras));
         let degrees = topology.degrees(scene.nodes.len());
         insert_joints(
             &mut world,

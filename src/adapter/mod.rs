@@ -48,7 +48,6 @@ mod resume;
 mod seating;
 mod skipped;
 mod state;
-mod stress_start;
 mod substeps;
 mod sync_in;
 mod sync_out;

@@ -294,7 +294,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             calm_time: REST_TIME,
             converged: true,
         };
-        // The picture is the rest's balance (`forces/rest_bias.rs`), measured with the
+        // The picture is the rest's balance (`stress/rest_bias.rs`), measured with the
         // springs at the floor's scale, as the first step will have them.
         self.heat_world();
         if let Some(world) = self.world.as_mut() {

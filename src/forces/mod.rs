@@ -36,15 +36,11 @@ use crate::world::RapierSceneWorld;
 pub(crate) mod barnes_hut;
 mod bodies;
 mod center;
-pub(crate) mod collide;
-mod counting_sort;
 mod group;
 pub(crate) mod many_body;
 mod position;
 mod radial;
-mod rest_bias;
 mod springs;
-pub(crate) mod stress;
 pub(crate) mod targets;
 
 pub(crate) use bodies::Bodies;
@@ -159,17 +155,17 @@ pub(crate) struct Forces<N> {
     list: Vec<Box<dyn BodyForce<N>>>,
     bodies: Bodies,
     sums: ForceSums,
-    collide: collide::Collide,
+    collide: crate::contacts::Collide,
     /// The stress model's terms ([`RapierLayoutConfig::stress`]), kept apart from the
     /// list: the start hands it the model it built.
-    pub(crate) stress: stress::StressForce,
+    pub(crate) stress: crate::stress::StressForce,
     /// The host's per-node forces for this call (`adapter/node_forces.rs` fills it).
     pub(crate) targets: NodeTargets,
     /// Whether the last substep set forces on bodies: rapier keeps a body's force until
     /// it is reset, so when no force is active any more they are cleared once.
     applied: bool,
-    /// A stress layout's springs at its last cold stop (`rest_bias.rs`).
-    rest_bias: rest_bias::RestBias,
+    /// A stress layout's springs at its last cold stop (`stress/rest_bias.rs`).
+    rest_bias: crate::stress::RestBias,
     /// Where the calls' time went, while the host measures it.
     pub(crate) profile: Option<StepProfile>,
 }
@@ -190,11 +186,11 @@ impl<N: Clone + Eq + Hash> Default for Forces<N> {
             list,
             bodies: Bodies::default(),
             sums: ForceSums::default(),
-            collide: collide::Collide::default(),
-            stress: stress::StressForce::default(),
+            collide: crate::contacts::Collide::default(),
+            stress: crate::stress::StressForce::default(),
             targets: NodeTargets::default(),
             applied: false,
-            rest_bias: rest_bias::RestBias::default(),
+            rest_bias: crate::stress::RestBias::default(),
             profile: None,
         }
     }
@@ -220,10 +216,10 @@ pub(crate) struct SavedForces {
     contacts_version: Option<u64>,
     /// The stress model and its pivot terms' held sums (empty without one).
     #[serde(default)]
-    stress: stress::StressForce,
+    stress: crate::stress::StressForce,
     /// The springs' pull at the last cold stop (empty without one).
     #[serde(default)]
-    rest_bias: rest_bias::RestBias,
+    rest_bias: crate::stress::RestBias,
 }
 
 impl<N: Clone + Eq + Hash> Forces<N> {
@@ -314,7 +310,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         }
         BodyForce::<N>::reset(&mut self.stress);
         // A new world counts its versions from 0 again.
-        self.rest_bias = rest_bias::RestBias::default();
+        self.rest_bias = crate::stress::RestBias::default();
     }
 
     /// Sets every awake dynamic body's force to the sum of the active forces at `heat`
@@ -461,7 +457,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
 
     /// At a stress layout's cold stop: what every dynamic body's springs (edges and
     /// stress terms) pull with where it rests, kept so that from here on the rest is
-    /// their balance (`rest_bias.rs`). Forgets it for other layouts.
+    /// their balance (`stress/rest_bias.rs`). Forgets it for other layouts.
     pub(crate) fn capture_rest(
         &mut self,
         world: &RapierSceneWorld<N>,
@@ -469,7 +465,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         heat: f32,
         dt: f32,
     ) {
-        self.rest_bias = rest_bias::RestBias::default();
+        self.rest_bias = crate::stress::RestBias::default();
         if config.stress.is_none() || config.cooling.is_none() {
             // Without a schedule no node is ever heated, so the held pivot terms would
             // never be worked out again.
@@ -485,7 +481,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         // Every pivot term worked out afresh at the rest positions.
         self.stress.renew_pivot_terms();
         self.sum_forces(world, config, heat, dt, false);
-        self.rest_bias = rest_bias::RestBias::capture(
+        self.rest_bias = crate::stress::RestBias::capture(
             world,
             &self.bodies.pushed,
             &self.sums.springs,
@@ -572,7 +568,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
 
     /// Forgets the rest's balance: the whole layout is laid out again.
     pub(crate) fn forget_rest(&mut self) {
-        self.rest_bias = rest_bias::RestBias::default();
+        self.rest_bias = crate::stress::RestBias::default();
     }
 
     /// Before the world halts: projects the overlaps the disk separation still holds

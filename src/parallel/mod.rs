@@ -6,7 +6,7 @@
 //! Barnes–Hut group or subtree, a fixed run of links, bodies, pairs or stress nodes)
 //! and puts their results together in the pieces' order, so what a piece computes, and
 //! the sum it ends in, are the same on any number of threads, and with the feature on
-//! or off. The contacts' passes (`forces/collide/passes.rs`) are the one exception to
+//! or off. The contacts' passes (`contacts/passes.rs`) are the one exception to
 //! the last: under the feature they solve the pairs block by block, an order fixed by
 //! the pairs alone, which differs from the serial build's from two blocks on.
 //!

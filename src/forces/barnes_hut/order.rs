@@ -6,7 +6,7 @@
 //! Below that, one whole sort on the calling thread, where a sort of that size costs
 //! less than handing it to the pool.
 
-use crate::forces::counting_sort::counting_sort;
+use crate::sort::counting_sort;
 use crate::parallel;
 
 /// From this many entries on, the sort goes bucket by bucket.

@@ -1,4 +1,4 @@
-//! A stress layout's new world ([`RapierLayoutConfig::stress`]): the length of a hop its
+//! A stress layout's new world ([`RapierLayoutConfig::stress`](crate::RapierLayoutConfig::stress)): the length of a hop its
 //! edge springs rest at, and, for the first world with [`StressStart::Global`], a start
 //! that is already a layout (`stress/start.rs`), turned to sit where the host's held
 //! nodes (pinned or dragged) are.
@@ -8,75 +8,81 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::Vector;
 
-use super::RapierLayout;
+use super::graph::{Graph, UNREACHED};
+use super::model::SparseStress;
+use super::start::{global_start, StartPlan};
 use crate::config::{StressModel, StressStart};
 use crate::input::scene::CanvasSceneInput;
 use crate::input::topology::Topology;
 use crate::layout::LayoutExtras;
-use crate::stress::graph::{Graph, UNREACHED};
-use crate::stress::model::SparseStress;
-use crate::stress::start::{global_start, StartPlan};
 use crate::world::bindings::ColliderSpec;
 use crate::world::RapierSceneWorld;
 
 /// The gap, in world units, the hop length leaves between two seated disks.
 const SEAT_GAP: f32 = 2.0;
 
-impl<N: Clone + Eq + Hash> RapierLayout<N> {
-    /// For a stress layout's new `world` (its bodies inserted, its joints not yet):
-    /// chooses the hop length and, on the first world with a global start, moves the
-    /// bodies to the start layout. Returns the model built on the way, for the force.
-    pub(super) fn start_stress(
-        &mut self,
-        world: &mut RapierSceneWorld<N>,
-        scene: &CanvasSceneInput<N>,
-        topology: &Topology,
-        extras: &LayoutExtras<N>,
-    ) -> Option<SparseStress> {
-        let stress = self.config.stress?;
-        let edges: Vec<(usize, usize)> = topology
-            .edges
-            .iter()
-            .zip(&topology.weights)
-            .filter(|(_, &w)| w > 0.0)
-            .filter_map(|(&(a, b), _)| {
-                Some((
-                    world.slot_of(&scene.nodes[a].id)?,
-                    world.slot_of(&scene.nodes[b].id)?,
-                ))
-            })
-            .collect();
-        let graph = Graph::new(world.slot_count(), edges.iter().copied());
-        let model = SparseStress::new(
-            &graph,
-            stress.pivot_count(graph.len()),
-            stress.exact_hops.max(1),
-        );
-        let previous = self.world.as_ref().and_then(RapierSceneWorld::hop_length);
-        let first = self.rebuilds == 0;
-        let global = first && !self.cold_start && stress.start == StressStart::Global;
-        let hop = match previous {
-            Some(hop) if !global => hop,
-            _ if global || (stress.start == StressStart::HostPositions && stress.fit_length) => {
-                let plan = plan_for(&stress, world, graph.len());
-                let radii: Vec<f32> = (0..world.slot_count())
-                    .map(|s| seating_radius(world.shape_at(s)))
-                    .collect();
-                let start = global_start(&graph, &model, &radii, plan);
-                if global {
-                    place(world, start.positions, scene, extras);
-                }
-                start.hop_length
+/// Where a stress layout's new world comes from: what the layout knew before it.
+pub(crate) struct WorldOrigin {
+    /// The hop length of the world this one replaces, if any.
+    pub(crate) previous_hop: Option<f32>,
+    /// Whether this is the layout's first world.
+    pub(crate) first: bool,
+    /// Whether the first world starts cold on the host's picture
+    /// ([`RapierLayout::at_rest`](crate::RapierLayout::at_rest)).
+    pub(crate) cold_start: bool,
+}
+
+/// For a stress layout's new `world` (its bodies inserted, its joints not yet):
+/// chooses the hop length and, on the first world with a global start, moves the
+/// bodies to the start layout. Returns the model built on the way, for the force.
+pub(crate) fn start_world<N: Clone + Eq + Hash>(
+    stress: StressModel,
+    origin: WorldOrigin,
+    world: &mut RapierSceneWorld<N>,
+    scene: &CanvasSceneInput<N>,
+    topology: &Topology,
+    extras: &LayoutExtras<N>,
+) -> SparseStress {
+    let edges: Vec<(usize, usize)> = topology
+        .edges
+        .iter()
+        .zip(&topology.weights)
+        .filter(|(_, &w)| w > 0.0)
+        .filter_map(|(&(a, b), _)| {
+            Some((
+                world.slot_of(&scene.nodes[a].id)?,
+                world.slot_of(&scene.nodes[b].id)?,
+            ))
+        })
+        .collect();
+    let graph = Graph::new(world.slot_count(), edges.iter().copied());
+    let model = SparseStress::new(
+        &graph,
+        stress.pivot_count(graph.len()),
+        stress.exact_hops.max(1),
+    );
+    let global = origin.first && !origin.cold_start && stress.start == StressStart::Global;
+    let hop = match origin.previous_hop {
+        Some(hop) if !global => hop,
+        _ if global || (stress.start == StressStart::HostPositions && stress.fit_length) => {
+            let plan = plan_for(&stress, world, graph.len());
+            let radii: Vec<f32> = (0..world.slot_count())
+                .map(|s| seating_radius(world.shape_at(s)))
+                .collect();
+            let start = global_start(&graph, &model, &radii, plan);
+            if global {
+                place(world, start.positions, scene, extras);
             }
-            // A saved picture: the scale it was drawn at.
-            _ if self.cold_start => {
-                picture_scale(world, &graph, &model).unwrap_or(stress.hop_length)
-            }
-            _ => stress.hop_length,
-        };
-        world.set_hop_length(hop);
-        Some(model)
-    }
+            start.hop_length
+        }
+        // A saved picture: the scale it was drawn at.
+        _ if origin.cold_start => {
+            picture_scale(world, &graph, &model).unwrap_or(stress.hop_length)
+        }
+        _ => stress.hop_length,
+    };
+    world.set_hop_length(hop);
+    model
 }
 
 /// The radius a node counts with when the hop length is fitted: a disk's own, and for a

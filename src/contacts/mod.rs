@@ -28,7 +28,7 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::Vector;
 
-use super::Bodies;
+use crate::forces::Bodies;
 use crate::config::ContactSoftness;
 use crate::world::{RapierSceneWorld, SlotsView};
 

@@ -7,7 +7,7 @@
 use euclid::default::{Point2D, Vector2D};
 
 use super::pairs::{PAIRS_AT_LEAST, PAIRS_PER_BODY};
-use crate::forces::counting_sort::counting_sort;
+use crate::sort::counting_sort;
 use crate::parallel;
 
 /// A cell's key: row in the high half, column in the low half, both offset to be

@@ -14,15 +14,15 @@ use std::hash::Hash;
 
 use euclid::default::{Point2D, Vector2D};
 
-use super::targets::NodeTargets;
-use super::{BodyForce, ForceContext, ForceSums};
+use crate::forces::targets::NodeTargets;
+use crate::forces::{BodyForce, ForceContext, ForceSums};
 use sums::{padded, pivot_pull};
 
 mod sums;
 use crate::config::RapierLayoutConfig;
 use crate::parallel;
-use crate::stress::graph::Graph;
-use crate::stress::model::{Reach, SparseStress};
+use super::graph::Graph;
+use super::model::{Reach, SparseStress};
 use crate::world::RapierSceneWorld;
 
 /// The stress terms of a world, and the pivot terms' last sums.
@@ -58,7 +58,7 @@ pub(crate) struct StressForce {
     #[serde(skip)]
     pulls: Vec<Vec<(u32, Vector2D<f32>, f32)>>,
     /// Set for each substep by the forces: the layout rested and keeps its rest's
-    /// balance (`rest_bias.rs`), so the pivot terms are held for every node the
+    /// balance (`stress/rest_bias.rs`), so the pivot terms are held for every node the
     /// disturbance did not heat (worked out afresh only for the heated ones), and a node
     /// that wakes finds the terms it rested with.
     #[serde(skip)]

@@ -1,6 +1,6 @@
 //! A stable counting sort of `(key, index)` entries by a bucket of the key: the cells
-//! of the contacts' grid (`collide/grid.rs`, by column and then by row) and the
-//! Barnes–Hut tree's order (`barnes_hut/order.rs`, by the cell at depth 6).
+//! of the contacts' grid (`contacts/grid.rs`, by column and then by row) and the
+//! Barnes–Hut tree's order (`forces/barnes_hut/order.rs`, by the cell at depth 6).
 
 /// Moves `from` into `to` ordered by `bucket` (below `buckets`), keeping the order of
 /// entries in the same bucket. Leaves `counts[b]` at the end of bucket `b`'s entries in

@@ -164,6 +164,7 @@ mod adapter;
 pub mod config;
 mod contacts;
 mod forces;
+mod graph;
 mod input;
 mod layout;
 mod parallel;

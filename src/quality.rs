@@ -2,12 +2,13 @@
 //! how far a disturbance reached (displacement by hop distance). Used by the quality and
 //! feel examples and the tests; handy for hosts comparing layouts.
 
-use std::collections::{HashMap, VecDeque};
+use std::collections::HashMap;
 use std::hash::Hash;
 
 use euclid::default::{Point2D, Vector2D};
 
 use crate::contacts::shapes::gap;
+use crate::graph::Graph;
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::layout::IdHasher;
 use crate::world::bindings::ColliderSpec;
@@ -20,6 +21,12 @@ fn index_of<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> HashMap<&N, us
         .enumerate()
         .map(|(i, n)| (&n.id, i))
         .collect()
+}
+
+/// The scene's edges as a graph of its nodes, in the scene's order.
+fn graph_of<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> Graph {
+    let segments = segments(scene);
+    Graph::new(scene.nodes.len(), segments.iter().map(|&(a, b, _, _)| (a, b)))
 }
 
 /// The edges as segments (self-loops and edges naming missing nodes left out).
@@ -201,28 +208,14 @@ pub fn hop_distances<N: Clone + Eq + Hash>(
     let Some(&start) = index_of(scene).get(origin) else {
         return HashMap::new();
     };
-    let mut neighbours = vec![Vec::new(); scene.nodes.len()];
-    for (a, b, _, _) in segments(scene) {
-        neighbours[a].push(b);
-        neighbours[b].push(a);
-    }
-    let mut hops = vec![usize::MAX; scene.nodes.len()];
-    hops[start] = 0;
-    let mut queue = VecDeque::from([start]);
-    while let Some(i) = queue.pop_front() {
-        for &j in &neighbours[i] {
-            if hops[j] == usize::MAX {
-                hops[j] = hops[i] + 1;
-                queue.push_back(j);
-            }
-        }
-    }
+    let mut hops = vec![u32::MAX; scene.nodes.len()];
+    graph_of(scene).search([start], &mut hops, &mut Vec::new(), |_, _| true);
     scene
         .nodes
         .iter()
         .zip(hops)
-        .filter(|&(_, h)| h != usize::MAX)
-        .map(|(n, h)| (n.id.clone(), h))
+        .filter(|&(_, h)| h != u32::MAX)
+        .map(|(n, h)| (n.id.clone(), h as usize))
         .collect()
 }
 
@@ -309,24 +302,12 @@ pub fn displacement_by_hops<N: Clone + Eq + Hash>(
 /// ```
 pub fn normalized_stress<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> Option<f64> {
     let n = scene.nodes.len();
-    let mut neighbours = vec![Vec::new(); n];
-    for (a, b, _, _) in segments(scene) {
-        neighbours[a].push(b);
-        neighbours[b].push(a);
-    }
-    let bfs = |s: usize, hops: &mut Vec<u32>| {
+    let graph = graph_of(scene);
+    let mut queue = Vec::new();
+    let mut bfs = |s: usize, hops: &mut Vec<u32>| {
         hops.clear();
         hops.resize(n, u32::MAX);
-        hops[s] = 0;
-        let mut queue = VecDeque::from([s]);
-        while let Some(i) = queue.pop_front() {
-            for &j in &neighbours[i] {
-                if hops[j] == u32::MAX {
-                    hops[j] = hops[i] + 1;
-                    queue.push_back(j);
-                }
-            }
-        }
+        graph.search([s], hops, &mut queue, |_, _| true);
     };
     let mut pairs: Vec<(usize, usize, f64)> = Vec::new();
     let mut hops = Vec::new();

@@ -5,6 +5,7 @@
 
 use std::hash::Hash;
 
+use crate::graph::Graph;
 use crate::world::RapierSceneWorld;
 
 /// Each hop from what was touched is this much as hot as the one before.
@@ -18,9 +19,8 @@ pub(super) struct Disturbances {
     /// Something that reheats the whole layout happened (a configuration or gravity
     /// change, a new world).
     everything: bool,
-    /// The world's joints as neighbour lists by slot, and the world version they are of.
-    offsets: Vec<u32>,
-    neighbours: Vec<u32>,
+    /// The world's joints as a graph of its slots, and the world version it is of.
+    graph: Graph,
     version: Option<u64>,
     /// Hop distance reached by the spread, by slot (`u32::MAX`: not reached).
     reached: Vec<u32>,
@@ -86,77 +86,43 @@ impl Disturbances {
         self.itself.resize(n, false);
         self.spreads.clear();
         self.spreads.resize(n, false);
-        self.queue.clear();
         // A breadth-first search from every touched node at once.
         for &(slot, itself, spreads) in &self.touched {
             let s = slot as usize;
-            if s >= n {
-                continue;
-            }
-            self.itself[s] |= itself;
-            self.spreads[s] |= spreads;
-            if self.reached[s] != 0 {
-                self.reached[s] = 0;
-                self.queue.push(slot);
+            if s < n {
+                self.itself[s] |= itself;
+                self.spreads[s] |= spreads;
             }
         }
-        let mut next = 0;
-        while next < self.queue.len() {
-            let s = self.queue[next] as usize;
-            next += 1;
+        let sources = self.touched.iter().map(|t| t.0 as usize).filter(|&s| s < n);
+        let spreads = &self.spreads;
+        let reached = self.graph.search(sources, &mut self.reached, &mut self.queue, |s, hop| {
+            hop < hops && (hop > 0 || spreads[s])
+        });
+        for &slot in reached {
+            let s = slot as usize;
             let hop = self.reached[s];
-            {
-                let wanted = if hop > 0 || self.itself[s] {
-                    heat * HOP_FALLOFF.powi(hop as i32)
-                } else {
-                    coasting
-                };
-                let host = world.host_at_mut(s);
-                if wanted > host.heat {
-                    host.heat = wanted;
-                }
-                let body = world.body_at_mut(s);
-                if body.is_dynamic() && body.is_sleeping() {
-                    body.wake_up(true);
-                }
+            let wanted = if hop > 0 || self.itself[s] {
+                heat * HOP_FALLOFF.powi(hop as i32)
+            } else {
+                coasting
+            };
+            let host = world.host_at_mut(s);
+            if wanted > host.heat {
+                host.heat = wanted;
             }
-            if hop >= hops || (hop == 0 && !self.spreads[s]) {
-                continue;
-            }
-            for k in self.offsets[s]..self.offsets[s + 1] {
-                let m = self.neighbours[k as usize] as usize;
-                if self.reached[m] == u32::MAX {
-                    self.reached[m] = hop + 1;
-                    self.queue.push(m as u32);
-                }
+            let body = world.body_at_mut(s);
+            if body.is_dynamic() && body.is_sleeping() {
+                body.wake_up(true);
             }
         }
     }
 
-    /// The world's joints as neighbour lists by slot, rebuilt when the world changed.
+    /// The world's joints as a graph of its slots, built again when the world changed.
     fn index<N: Clone + Eq + Hash>(&mut self, world: &RapierSceneWorld<N>) {
-        if self.version == Some(world.version()) {
-            return;
+        if self.version != Some(world.version()) {
+            self.graph = Graph::new(world.slot_count(), world.joint_ends());
+            self.version = Some(world.version());
         }
-        let n = world.slot_count();
-        self.offsets.clear();
-        self.offsets.resize(n + 1, 0);
-        for (a, b) in world.joint_ends() {
-            self.offsets[a + 1] += 1;
-            self.offsets[b + 1] += 1;
-        }
-        for s in 0..n {
-            self.offsets[s + 1] += self.offsets[s];
-        }
-        self.neighbours.clear();
-        self.neighbours.resize(self.offsets[n] as usize, 0);
-        let mut fill = self.offsets.clone();
-        for (a, b) in world.joint_ends() {
-            self.neighbours[fill[a] as usize] = b as u32;
-            fill[a] += 1;
-            self.neighbours[fill[b] as usize] = a as u32;
-            fill[b] += 1;
-        }
-        self.version = Some(world.version());
     }
 }

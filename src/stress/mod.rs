@@ -8,7 +8,6 @@
 //! [`RapierLayoutConfig::stress`](crate::RapierLayoutConfig::stress).
 
 mod force;
-pub(crate) mod graph;
 mod mds;
 pub(crate) mod model;
 mod pack;

@@ -15,7 +15,7 @@
 //! A component no larger than its share of pivots has every node a pivot, each its own
 //! region: the terms are then exactly the full stress (every pair, `s = 1`).
 
-use super::graph::{Graph, UNREACHED};
+use crate::graph::{Graph, UNREACHED};
 
 /// Most exact terms a node keeps (the nearest ones, in breadth-first order): a hub's
 /// two-hop neighbourhood can hold the whole graph.
@@ -409,30 +409,17 @@ impl Reach {
     /// The nodes 2 to `hops` hops from `from`, in breadth-first order, with their hops.
     fn within(&mut self, graph: &Graph, from: usize, hops: u16) -> &[(u32, u16)] {
         self.seen.resize(graph.len(), UNREACHED);
-        self.queue.clear();
         self.found.clear();
-        self.queue.push(from as u32);
-        self.seen[from] = 0;
-        let mut next = 0;
-        while next < self.queue.len() {
-            let u = self.queue[next] as usize;
-            next += 1;
-            let h = self.seen[u];
-            if h >= hops {
-                continue;
-            }
-            for &v in graph.neighbours(u) {
-                if self.seen[v as usize] == UNREACHED {
-                    self.seen[v as usize] = h + 1;
-                    self.queue.push(v);
-                    if h + 1 >= 2 {
-                        self.found.push((v, h + 1));
-                    }
-                }
-            }
-        }
-        for &v in &self.queue {
-            self.seen[v as usize] = UNREACHED;
+        let reached = graph.search([from], &mut self.seen, &mut self.queue, |_, h| h < hops);
+        let seen = &mut self.seen;
+        self.found.extend(
+            reached
+                .iter()
+                .map(|&v| (v, seen[v as usize]))
+                .filter(|&(_, h)| h >= 2),
+        );
+        for &v in reached {
+            seen[v as usize] = UNREACHED;
         }
         &self.found
     }

@@ -8,7 +8,7 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::Vector;
 
-use super::graph::{Graph, UNREACHED};
+use crate::graph::{Graph, UNREACHED};
 use super::model::SparseStress;
 use super::start::{global_start, StartPlan};
 use crate::config::{StressModel, StressStart};

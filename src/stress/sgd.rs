@@ -5,7 +5,7 @@
 //! `ε / w_max` over the passes. A term moves its own node only; the pair's other node
 //! takes its own step when its turn comes. Positions are in hop units.
 
-use super::graph::{Graph, UNREACHED};
+use crate::graph::{Graph, UNREACHED};
 use super::model::SparseStress;
 
 /// The last passes' step against the heaviest term: `ε` of s_gd2.

@@ -6,7 +6,7 @@ use std::collections::HashMap;
 
 use euclid::default::Point2D;
 
-use super::graph::{Graph, UNREACHED};
+use crate::graph::{Graph, UNREACHED};
 use super::mds::pivot_mds;
 use super::model::SparseStress;
 use super::pack::pack_components;

@@ -230,7 +230,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
 
     /// The two bodies' slots of every joint, in joint order. Valid until
     /// [`version`](Self::version) changes.
-    pub(crate) fn joint_ends(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+    pub(crate) fn joint_ends(&self) -> impl Iterator<Item = (usize, usize)> + Clone + '_ {
         self.joints.iter().filter_map(|joint| {
             Some((
                 *self.index.get(&joint.a)? as usize,

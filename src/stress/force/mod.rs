@@ -21,7 +21,7 @@ use sums::{padded, pivot_pull};
 mod sums;
 use crate::config::RapierLayoutConfig;
 use crate::parallel;
-use super::graph::Graph;
+use crate::graph::Graph;
 use super::model::{Reach, SparseStress};
 use crate::world::RapierSceneWorld;
 

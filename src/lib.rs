@@ -166,7 +166,6 @@ mod contacts;
 mod forces;
 mod graph;
 mod input;
-mod layout;
 mod parallel;
 pub mod profile;
 pub mod quality;
@@ -191,7 +190,7 @@ pub use input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport}
 pub use input::shape::NodeShape;
 pub use input::snapshot_error::SnapshotError;
 pub use input::validation::{LayoutError, MAX_COORDINATE};
-pub use layout::{DeltaMap, Layout, LayoutExtras, NodeMap, NodeSet};
+pub use input::layout::{DeltaMap, Layout, LayoutExtras, NodeMap, NodeSet};
 pub use world::bindings::{
     ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot, PhysicsMaterial, SceneBodyKind,
 };
@@ -231,7 +230,7 @@ pub use forces::barnes_hut::ManyBody;
 #[cfg(feature = "petgraph")]
 pub use input::petgraph::{spiral_position, SPIRAL_SPACING};
 #[doc(hidden)]
-pub use layout::IdHasher;
+pub use input::layout::IdHasher;
 #[doc(hidden)]
 pub use timestep::{StepPlan, DEFAULT_TIMESTEP, MIN_TIMESTEP};
 

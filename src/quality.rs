@@ -10,7 +10,7 @@ use euclid::default::{Point2D, Vector2D};
 use crate::contacts::shapes::gap;
 use crate::graph::Graph;
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
-use crate::layout::IdHasher;
+use crate::input::layout::IdHasher;
 use crate::world::bindings::ColliderSpec;
 
 /// Each node's index in the scene's node list, by id.

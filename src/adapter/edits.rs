@@ -14,7 +14,7 @@ use crate::config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, SpringModel, 
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::input::topology::Topology;
 use crate::input::validation::node_is_valid;
-use crate::layout::{IdHasher, LayoutExtras};
+use crate::input::layout::{IdHasher, LayoutExtras};
 use crate::stress::{start_world, WorldOrigin};
 use crate::world::bindings::{ColliderSpec, NodeAvatarBinding, SceneBodyKind};
 use crate::world::nodes::body_mass;
@@ -483,7 +483,7 @@ fn edge_joint_for(
         }
         None => base,
     };
-    shared.weighted(weight, config.springs.weight)
+    config.springs.weight.weigh(shared, weight)
 }
 
 /// [`Springs::degree_exponent`](crate::config::Springs::degree_exponent) when it scales anything: finite and

@@ -18,7 +18,7 @@ use super::RapierLayout;
 use crate::config::BodyKindPolicy;
 use crate::input::scene::CanvasSceneInput;
 use crate::input::validation::node_is_valid;
-use crate::layout::{DeltaMap, LayoutExtras};
+use crate::input::layout::{DeltaMap, LayoutExtras};
 use crate::RapierLayoutState;
 
 impl<N: Clone + Eq + Hash> RapierLayout<N> {

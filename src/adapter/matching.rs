@@ -7,7 +7,7 @@ use super::RapierLayout;
 use crate::input::scene::CanvasSceneInput;
 use crate::input::topology::Topology;
 use crate::input::validation::node_is_valid;
-use crate::layout::LayoutExtras;
+use crate::input::layout::LayoutExtras;
 use crate::world::RapierSceneWorld;
 
 /// A scene node without a body this call (none yet, or a repeated id).

@@ -28,7 +28,7 @@ use crate::config::RapierLayoutConfig;
 use crate::forces::Forces;
 use crate::input::scene::{CanvasSceneInput, CanvasViewport};
 use crate::input::validation::{validate, LayoutError};
-use crate::layout::{DeltaMap, Layout, LayoutExtras};
+use crate::input::layout::{DeltaMap, Layout, LayoutExtras};
 use crate::profile::{StepProfile, Stopwatch};
 use crate::sanitize::finite_or;
 use crate::timestep::DEFAULT_TIMESTEP;
@@ -57,7 +57,6 @@ use drag::{Drive, Flight};
 use heat::Heat;
 use matching::Matching;
 use rest::Rest;
-pub use rest::REST_TIME;
 pub use resume::LayoutSnapshot;
 pub use state::RapierLayoutState;
 
@@ -456,7 +455,7 @@ impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
     }
 
     /// True when the layout was at rest after the last call: a world exists, no dynamic body moved faster
-    /// than [`RestDetection::speed`](crate::config::RestDetection::speed) for [`REST_TIME`] seconds of simulated
+    /// than [`RestDetection::speed`](crate::config::RestDetection::speed) for [`REST_TIME`](crate::config::REST_TIME) seconds of simulated
     /// time, nothing (a drag, a release, a host move, a topology change) disturbed it
     /// meanwhile, and every dynamic body is asleep; or a [`Cooling`](crate::config::Cooling)
     /// schedule has ended and halted the world. Once true, calls report no motion until

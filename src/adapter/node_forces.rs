@@ -15,7 +15,7 @@ use super::RapierLayout;
 use crate::forces::targets::NodeTargets;
 use crate::input::node_forces::{AxisLock, NodeForces};
 use crate::input::scene::CanvasSceneInput;
-use crate::layout::LayoutExtras;
+use crate::input::layout::LayoutExtras;
 use crate::world::RapierSceneWorld;
 
 impl<N: Clone + Eq + Hash> RapierLayout<N> {

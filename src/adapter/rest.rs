@@ -7,14 +7,9 @@ use super::heat::Heat;
 use super::state::RapierLayoutState;
 use super::sync_out::FrameReport;
 use super::RapierLayout;
-use crate::layout::DeltaMap;
+use crate::input::layout::DeltaMap;
+use crate::config::REST_TIME;
 use crate::timestep::StepPlan;
-
-/// How long (simulated seconds) every dynamic body must stay under
-/// [`RapierLayoutConfig::rest.speed`](crate::config::RestDetection::speed) before
-/// [`Layout::is_converged`](crate::Layout::is_converged) says so; the same time rapier
-/// waits before putting a body to sleep.
-pub const REST_TIME: f32 = 0.5;
 
 /// The convergence signal.
 #[derive(Clone, Copy, Debug, Default, serde::Serialize, serde::Deserialize)]

@@ -13,7 +13,7 @@ use std::hash::Hash;
 
 use euclid::default::{Point2D, Vector2D};
 
-use crate::layout::IdHasher;
+use crate::input::layout::IdHasher;
 use crate::world::RapierSceneWorld;
 
 /// The gap, in world units, a seat leaves between its disk and every other.

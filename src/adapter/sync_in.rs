@@ -21,7 +21,7 @@ use super::matching::{NodeMatch, NO_SLOT};
 use super::RapierLayout;
 use crate::config::{BodyKindPolicy, RapierLayoutConfig};
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
-use crate::layout::LayoutExtras;
+use crate::input::layout::LayoutExtras;
 use crate::sanitize::finite_or;
 use crate::world::bindings::ColliderSpec;
 use crate::world::RapierSceneWorld;

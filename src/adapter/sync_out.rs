@@ -11,7 +11,7 @@ use super::matching::{Matching, NO_SLOT};
 use super::RapierLayout;
 use crate::input::scene::CanvasSceneInput;
 use crate::input::validation::{position_in_range, MAX_COORDINATE};
-use crate::layout::{DeltaMap, IdHasher};
+use crate::input::layout::{DeltaMap, IdHasher};
 use crate::world::RapierSceneWorld;
 
 /// What one call reports.

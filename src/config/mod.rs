@@ -2,7 +2,7 @@
 //! effect, its trade-off and its default.
 //!
 //! The configuration is grouped by what travels together, each group in its own file
-//! and read by one stage: what edges and pins become (`edge_joint`), how springs are
+//! and read by one stage: which body kind a node gets (`body_kind`), how springs are
 //! solved and tuned ([`Springs`]), contacts ([`Contacts`]), what one call may simulate
 //! ([`FrameLimits`]), the solver ([`Solver`]), throws ([`Throw`]), rest detection
 //! ([`RestDetection`]), and the optional models: many-body repulsion ([`Repulsion`]),
@@ -17,10 +17,11 @@ use crate::world::bindings::PhysicsMaterial;
 
 mod contacts;
 pub(crate) mod cooling;
-pub(crate) mod edge_joint;
+mod body_kind;
 mod frame;
 pub(crate) mod groups;
 mod presets;
+mod repulsion;
 mod rest;
 pub(crate) mod solver;
 mod springs;
@@ -28,17 +29,17 @@ pub(crate) mod stress;
 mod throw;
 
 pub use contacts::{ContactModel, ContactSoftness, Contacts};
-pub use edge_joint::{BodyKindPolicy, EdgeJoint};
+pub use body_kind::BodyKindPolicy;
+pub use crate::world::EdgeJoint;
 pub use frame::FrameLimits;
 pub use groups::GroupForce;
-pub use rest::RestDetection;
+pub use repulsion::Repulsion;
+pub use rest::{RestDetection, REST_TIME};
 pub use solver::{Accuracy, Solver, SolverSettings};
 pub use springs::{EdgeWeight, SpringModel, Springs};
 pub use stress::{StressModel, StressStart};
 pub use throw::Throw;
 
-pub use crate::adapter::REST_TIME;
-pub use crate::forces::many_body::Repulsion;
 pub use cooling::Cooling;
 
 /// What to do when the topology hash changes.

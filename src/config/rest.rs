@@ -4,6 +4,12 @@
 
 use serde::{Deserialize, Serialize};
 
+/// How long (simulated seconds) every dynamic body must stay under
+/// [`RestDetection::speed`] before
+/// [`Layout::is_converged`](crate::Layout::is_converged) says so; the same time rapier
+/// waits before putting a body to sleep.
+pub const REST_TIME: f32 = 0.5;
+
 /// When the layout reports rest, and the smallest displacement it reports. Both take
 /// effect at the next call.
 ///
@@ -23,7 +29,7 @@ use serde::{Deserialize, Serialize};
 pub struct RestDetection {
     /// Speed, in world units per second, under which a body counts as calm:
     /// [`Layout::is_converged`](crate::Layout::is_converged) reports rest once no
-    /// dynamic body was faster for [`REST_TIME`](crate::config::REST_TIME) and rapier
+    /// dynamic body was faster for [`REST_TIME`] and rapier
     /// has put every body to sleep (rapier sleeps bodies slower than
     /// `0.05 × length_unit`, 5 units/s at the default, for 0.5 s). Higher reports rest
     /// sooner, with more motion left. Default: `5.0`.

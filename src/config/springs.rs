@@ -5,8 +5,10 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::world::EdgeJoint;
+
 #[cfg(doc)]
-use crate::config::{EdgeJoint, Repulsion};
+use crate::config::Repulsion;
 
 /// How edge springs are solved and tuned: the part of
 /// [`RapierLayoutConfig`](crate::RapierLayoutConfig) that travels with
@@ -126,4 +128,65 @@ pub enum EdgeWeight {
     /// 2 draws the edge twice as long (vis-network's `edges.length`, d3-force's
     /// `link.distance`), at the configured stiffness.
     Length,
+}
+
+impl EdgeWeight {
+    /// `joint` for an edge of weight `weight` under this mapping: a weight that is not
+    /// positive (0, negative, NaN) gives no joint. Weight 1 gives the joint itself, bit
+    /// for bit.
+    pub(crate) fn weigh(self, joint: EdgeJoint, weight: f32) -> EdgeJoint {
+        if !(weight > 0.0 && weight.is_finite()) {
+            return EdgeJoint::None;
+        }
+        match (self, joint) {
+            (
+                EdgeWeight::Strength,
+                EdgeJoint::Spring {
+                    rest_length,
+                    stiffness,
+                    damping,
+                },
+            ) => EdgeJoint::Spring {
+                rest_length,
+                stiffness: stiffness * weight,
+                damping: damping * weight,
+            },
+            (
+                EdgeWeight::Strength,
+                EdgeJoint::Rope {
+                    max_length,
+                    stiffness,
+                },
+            ) => EdgeJoint::Rope {
+                max_length,
+                stiffness: stiffness * weight,
+            },
+            (
+                EdgeWeight::Length,
+                EdgeJoint::Spring {
+                    rest_length,
+                    stiffness,
+                    damping,
+                },
+            ) => EdgeJoint::Spring {
+                rest_length: rest_length * weight,
+                stiffness,
+                damping,
+            },
+            (
+                EdgeWeight::Length,
+                EdgeJoint::Rope {
+                    max_length,
+                    stiffness,
+                },
+            ) => EdgeJoint::Rope {
+                max_length: max_length * weight,
+                stiffness,
+            },
+            (EdgeWeight::Length, EdgeJoint::Distance { length }) => EdgeJoint::Distance {
+                length: length * weight,
+            },
+            (_, kind) => kind,
+        }
+    }
 }

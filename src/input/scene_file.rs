@@ -11,7 +11,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput};
 use crate::input::validation::{validate, LayoutError};
-use crate::layout::LayoutExtras;
+use crate::input::layout::LayoutExtras;
 
 /// One node of a scene file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

@@ -1,12 +1,9 @@
 //! The shape a host draws a node as ([`NodeShape`]): the disk of its radius, or an
 //! axis-aligned box (a label box), which the layout keeps level and apart.
 
-use euclid::default::Vector2D;
 use serde::{Deserialize, Serialize};
 
 use crate::input::validation::MAX_COORDINATE;
-use crate::sanitize::finite_or;
-use crate::world::bindings::ColliderSpec;
 
 /// The shape of a node, as the host draws it: what the layout's contacts keep apart.
 ///
@@ -61,42 +58,6 @@ impl NodeShape {
     /// radius are finite, non-negative and no larger than 2 × [`MAX_COORDINATE`].
     pub fn is_valid(&self) -> bool {
         self.problem().is_none()
-    }
-
-    /// The collider the layout gives a node of this shape: the disk of `radius` (the
-    /// node's radius with the default already put in for 0), or the box, rounded where
-    /// its corners are, with finite extents from 0 to [`MAX_COORDINATE`] (unusable
-    /// values count as 0, a corner radius as at most half the shorter side).
-    ///
-    /// # Example
-    /// ```
-    /// use graph_canvas_layout::{euclid::default::Vector2D, ColliderSpec, NodeShape};
-    /// let label = NodeShape::Rect { width: 63.0, height: 20.0, corner_radius: 0.0 };
-    /// assert_eq!(label.collider(16.0), ColliderSpec::Rect { half_extents: Vector2D::new(31.5, 10.0) });
-    /// assert_eq!(NodeShape::Disk.collider(16.0), ColliderSpec::Circle { radius: 16.0 });
-    /// ```
-    pub fn collider(&self, radius: f32) -> ColliderSpec {
-        match *self {
-            NodeShape::Disk => ColliderSpec::Circle { radius },
-            NodeShape::Rect {
-                width,
-                height,
-                corner_radius,
-            } => {
-                let half = |v: f32| (0.5 * finite_or(v, 0.0)).clamp(0.0, MAX_COORDINATE);
-                let half_extents = Vector2D::new(half(width), half(height));
-                let corner_radius =
-                    finite_or(corner_radius, 0.0).clamp(0.0, half_extents.x.min(half_extents.y));
-                if corner_radius > 0.0 {
-                    ColliderSpec::RoundRect {
-                        half_extents,
-                        corner_radius,
-                    }
-                } else {
-                    ColliderSpec::Rect { half_extents }
-                }
-            }
-        }
     }
 
     /// The first unusable part of the shape as `(part, value)`: `"width"`, `"height"`

@@ -8,7 +8,7 @@ use euclid::default::Point2D;
 
 use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
-use crate::layout::{IdHasher, LayoutExtras};
+use crate::input::layout::{IdHasher, LayoutExtras};
 
 /// The largest coordinate a node's position may have, in world units (either sign).
 /// Beyond it an `f32` resolves positions to more than 64 units, rapier's contacts and

@@ -14,7 +14,7 @@ use super::start::{global_start, StartPlan};
 use crate::config::{StressModel, StressStart};
 use crate::input::scene::CanvasSceneInput;
 use crate::input::topology::Topology;
-use crate::layout::LayoutExtras;
+use crate::input::layout::LayoutExtras;
 use crate::world::bindings::ColliderSpec;
 use crate::world::RapierSceneWorld;
 

@@ -11,7 +11,7 @@ use super::mds::pivot_mds;
 use super::model::SparseStress;
 use super::pack::pack_components;
 use super::sgd::{stress_passes, Rng};
-use crate::layout::IdHasher;
+use crate::input::layout::IdHasher;
 
 /// Pivots pivot MDS uses per component (its cost grows with their square).
 const MDS_PIVOTS: usize = 50;

@@ -18,7 +18,7 @@ use crate::config::RapierLayoutConfig;
 use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput};
 use crate::input::shape::NodeShape;
-use crate::layout::{LayoutExtras, NodeMap, NodeSet};
+use crate::input::layout::{LayoutExtras, NodeMap, NodeSet};
 #[cfg(doc)]
 use crate::RapierLayout;
 

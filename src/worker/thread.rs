@@ -19,7 +19,7 @@ use crate::config::RapierLayoutConfig;
 use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
 use crate::input::shape::NodeShape;
-use crate::layout::{Layout, LayoutExtras, NodeMap};
+use crate::input::layout::{Layout, LayoutExtras, NodeMap};
 
 /// One host message. The worker applies them in the order they were sent.
 pub(super) enum Command<N> {

@@ -5,6 +5,10 @@ use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::RigidBodyType;
 use serde::{Deserialize, Serialize};
 
+use crate::input::shape::NodeShape;
+use crate::input::validation::MAX_COORDINATE;
+use crate::sanitize::finite_or;
+
 /// The physical material of a node's body and collider.
 ///
 /// Units are the world's: lengths in canvas pixels, time in seconds, mass in
@@ -208,4 +212,44 @@ pub struct EdgeJointSpec {
     pub stiffness: f32,
     /// Force per unit of relative speed along the edge.
     pub damping: f32,
+}
+
+/// What the world makes of a host's node shape (the scene's vocabulary, read here so
+/// that the scene needs nothing of the world).
+impl NodeShape {
+    /// The collider the layout gives a node of this shape: the disk of `radius` (the
+    /// node's radius with the default already put in for 0), or the box, rounded where
+    /// its corners are, with finite extents from 0 to [`MAX_COORDINATE`] (unusable
+    /// values count as 0, a corner radius as at most half the shorter side).
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Vector2D, ColliderSpec, NodeShape};
+    /// let label = NodeShape::Rect { width: 63.0, height: 20.0, corner_radius: 0.0 };
+    /// assert_eq!(label.collider(16.0), ColliderSpec::Rect { half_extents: Vector2D::new(31.5, 10.0) });
+    /// assert_eq!(NodeShape::Disk.collider(16.0), ColliderSpec::Circle { radius: 16.0 });
+    /// ```
+    pub fn collider(&self, radius: f32) -> ColliderSpec {
+        match *self {
+            NodeShape::Disk => ColliderSpec::Circle { radius },
+            NodeShape::Rect {
+                width,
+                height,
+                corner_radius,
+            } => {
+                let half = |v: f32| (0.5 * finite_or(v, 0.0)).clamp(0.0, MAX_COORDINATE);
+                let half_extents = Vector2D::new(half(width), half(height));
+                let corner_radius =
+                    finite_or(corner_radius, 0.0).clamp(0.0, half_extents.x.min(half_extents.y));
+                if corner_radius > 0.0 {
+                    ColliderSpec::RoundRect {
+                        half_extents,
+                        corner_radius,
+                    }
+                } else {
+                    ColliderSpec::Rect { half_extents }
+                }
+            }
+        }
+    }
 }

@@ -8,7 +8,7 @@ use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::{RigidBodyType, Vector};
 
 use super::{to_vector, RapierSceneWorld, POSITION_EPSILON};
-use crate::layout::{DeltaMap, IdHasher};
+use crate::input::layout::{DeltaMap, IdHasher};
 use crate::sanitize::finite_or;
 
 impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {

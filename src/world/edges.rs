@@ -10,7 +10,7 @@ use rapier2d::prelude::GenericJoint;
 use super::rapier_joint::{max_resolved_stiffness, rapier_joint, scaled_spring};
 use super::slot::{joint_key, JointSlot, SpringView};
 use super::RapierSceneWorld;
-use crate::config::EdgeJoint;
+use crate::world::EdgeJoint;
 use crate::world::bindings::EdgeJointSpec;
 
 impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {

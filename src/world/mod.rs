@@ -28,12 +28,13 @@ use rapier2d::prelude::{
     SoftBodySet, Vector,
 };
 
-use crate::layout::IdHasher;
+use crate::input::layout::IdHasher;
 
 mod activity;
 pub(crate) mod bindings;
 mod bodies;
 mod changes;
+mod edge_joint;
 mod edges;
 pub(crate) mod events;
 pub(crate) mod nodes;
@@ -47,6 +48,7 @@ pub(crate) use slot::SlotsView;
 pub use bindings::{
     ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot, PhysicsMaterial, SceneBodyKind,
 };
+pub use edge_joint::EdgeJoint;
 pub use events::SceneEvent;
 pub use rapier_joint::max_resolved_stiffness;
 mod spring_scale;

@@ -5,7 +5,7 @@ use rapier2d::prelude::{
     SpringCoefficients, SpringJointBuilder,
 };
 
-use crate::config::EdgeJoint;
+use crate::world::EdgeJoint;
 
 /// Stiffness, per unit of mass, of the constraint behind [`EdgeJoint::Distance`]:
 /// a natural frequency of 1,000 rad/s, far above any frame rate, so the rod is rigid at

@@ -23,7 +23,7 @@ use super::slot::{HostSync, JointSlot, NodeSlot};
 use super::spring_scale::{SpringScale, StretchCache};
 use super::{RapierSceneWorld, WorldOptions};
 use crate::input::snapshot_error::{check_counters, SnapshotError};
-use crate::layout::IdHasher;
+use crate::input::layout::IdHasher;
 
 /// Everything a world needs to continue where it was. Written with the seals of
 /// rapier's sets (hashed as it is written: a snapshot kept in memory pays nothing for

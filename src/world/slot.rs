@@ -12,7 +12,7 @@ use rapier2d::prelude::{
 use serde::{Deserialize, Serialize};
 
 use super::RapierSceneWorld;
-use crate::config::EdgeJoint;
+use crate::world::EdgeJoint;
 use crate::input::node_forces::AxisLock;
 use crate::world::bindings::ColliderSpec;
 

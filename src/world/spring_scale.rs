@@ -8,7 +8,7 @@ use euclid::default::Point2D;
 use serde::{Deserialize, Serialize};
 
 use super::RapierSceneWorld;
-use crate::config::EdgeJoint;
+use crate::world::EdgeJoint;
 use crate::sanitize::{finite_or, positive_or};
 
 /// The factor on every spring's stiffness and damping, and the inputs of the last

@@ -180,7 +180,9 @@ mod tests {
         let g = Graph::new(7, (0..6).map(|i| (i, i + 1)));
         let mut hops = vec![u32::MAX; 7];
         let mut queue = Vec::new();
-        let reached = g.search([0, 6, 0], &mut hops, &mut queue, |node, hop| hop < 1 && node != 6);
+        let reached = g.search([0, 6, 0], &mut hops, &mut queue, |node, hop| {
+            hop < 1 && node != 6
+        });
         assert_eq!(reached, [0, 6, 1], "sources first, then by hop");
         assert_eq!(hops, [0, 1, u32::MAX, u32::MAX, u32::MAX, u32::MAX, 0]);
     }

@@ -170,6 +170,7 @@ mod parallel;
 pub mod profile;
 pub mod quality;
 mod sanitize;
+mod simulate;
 mod sort;
 mod stress;
 mod timestep;
@@ -185,12 +186,12 @@ pub use rapier2d;
 // errors and snapshots a host meets; the rest lives in the modules below.
 pub use adapter::{LayoutSnapshot, RapierLayout, RapierLayoutState};
 pub use config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig};
+pub use input::layout::{DeltaMap, Layout, LayoutExtras, NodeMap, NodeSet};
 pub use input::node_forces::NodeForces;
 pub use input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
 pub use input::shape::NodeShape;
 pub use input::snapshot_error::SnapshotError;
 pub use input::validation::{LayoutError, MAX_COORDINATE};
-pub use input::layout::{DeltaMap, Layout, LayoutExtras, NodeMap, NodeSet};
 pub use world::bindings::{
     ColliderSpec, EdgeJointSpec, NodeAvatarBinding, NodeSnapshot, PhysicsMaterial, SceneBodyKind,
 };
@@ -227,10 +228,10 @@ pub mod prelude {
 #[doc(hidden)]
 pub use forces::barnes_hut::ManyBody;
 #[doc(hidden)]
+pub use input::layout::IdHasher;
+#[doc(hidden)]
 #[cfg(feature = "petgraph")]
 pub use input::petgraph::{spiral_position, SPIRAL_SPACING};
-#[doc(hidden)]
-pub use input::layout::IdHasher;
 #[doc(hidden)]
 pub use timestep::{StepPlan, DEFAULT_TIMESTEP, MIN_TIMESTEP};
 

@@ -9,8 +9,8 @@ use euclid::default::{Point2D, Vector2D};
 
 use crate::contacts::shapes::gap;
 use crate::graph::Graph;
-use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::input::layout::IdHasher;
+use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::world::bindings::ColliderSpec;
 
 /// Each node's index in the scene's node list, by id.
@@ -26,7 +26,10 @@ fn index_of<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> HashMap<&N, us
 /// The scene's edges as a graph of its nodes, in the scene's order.
 fn graph_of<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> Graph {
     let segments = segments(scene);
-    Graph::new(scene.nodes.len(), segments.iter().map(|&(a, b, _, _)| (a, b)))
+    Graph::new(
+        scene.nodes.len(),
+        segments.iter().map(|&(a, b, _, _)| (a, b)),
+    )
 }
 
 /// The edges as segments (self-loops and edges naming missing nodes left out).

@@ -96,9 +96,11 @@ impl Disturbances {
         }
         let sources = self.touched.iter().map(|t| t.0 as usize).filter(|&s| s < n);
         let spreads = &self.spreads;
-        let reached = self.graph.search(sources, &mut self.reached, &mut self.queue, |s, hop| {
-            hop < hops && (hop > 0 || spreads[s])
-        });
+        let reached = self
+            .graph
+            .search(sources, &mut self.reached, &mut self.queue, |s, hop| {
+                hop < hops && (hop > 0 || spreads[s])
+            });
         for &slot in reached {
             let s = slot as usize;
             let hop = self.reached[s];

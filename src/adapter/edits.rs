@@ -11,10 +11,10 @@ use euclid::default::{Point2D, Vector2D};
 use super::seating::Seating;
 use super::RapierLayout;
 use crate::config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, SpringModel, TopologyUpdate};
+use crate::input::layout::{IdHasher, LayoutExtras};
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::input::topology::Topology;
 use crate::input::validation::node_is_valid;
-use crate::input::layout::{IdHasher, LayoutExtras};
 use crate::stress::{start_world, WorldOrigin};
 use crate::world::bindings::{ColliderSpec, NodeAvatarBinding, SceneBodyKind};
 use crate::world::nodes::body_mass;
@@ -102,7 +102,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         if let (Some(model), Some(stress)) = (model, self.config.stress) {
             let pivots = stress.pivot_count(world.slot_count());
             self.forces
-                .stress
+                .stress_mut()
                 .adopt(&world, model, pivots, stress.exact_hops.max(1));
         }
         // A new world starts again: every body at rest where the host has it.

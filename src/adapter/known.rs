@@ -16,9 +16,9 @@ use std::hash::Hash;
 
 use super::RapierLayout;
 use crate::config::BodyKindPolicy;
+use crate::input::layout::{DeltaMap, LayoutExtras};
 use crate::input::scene::CanvasSceneInput;
 use crate::input::validation::node_is_valid;
-use crate::input::layout::{DeltaMap, LayoutExtras};
 use crate::RapierLayoutState;
 
 impl<N: Clone + Eq + Hash> RapierLayout<N> {

@@ -4,10 +4,10 @@
 use std::hash::Hash;
 
 use super::RapierLayout;
+use crate::input::layout::LayoutExtras;
 use crate::input::scene::CanvasSceneInput;
 use crate::input::topology::Topology;
 use crate::input::validation::node_is_valid;
-use crate::input::layout::LayoutExtras;
 use crate::world::RapierSceneWorld;
 
 /// A scene node without a body this call (none yet, or a repeated id).

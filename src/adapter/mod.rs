@@ -25,12 +25,12 @@ use std::hash::Hash;
 use euclid::default::Vector2D;
 
 use crate::config::RapierLayoutConfig;
-use crate::forces::Forces;
+use crate::input::layout::{DeltaMap, Layout, LayoutExtras};
 use crate::input::scene::{CanvasSceneInput, CanvasViewport};
 use crate::input::validation::{validate, LayoutError};
-use crate::input::layout::{DeltaMap, Layout, LayoutExtras};
 use crate::profile::{StepProfile, Stopwatch};
 use crate::sanitize::finite_or;
+use crate::simulate::Forces;
 use crate::timestep::DEFAULT_TIMESTEP;
 use crate::world::events::SceneEvent;
 use crate::world::RapierSceneWorld;

@@ -13,9 +13,9 @@ use rapier2d::prelude::{LockedAxes, Vector};
 use super::matching::NO_SLOT;
 use super::RapierLayout;
 use crate::forces::targets::NodeTargets;
+use crate::input::layout::LayoutExtras;
 use crate::input::node_forces::{AxisLock, NodeForces};
 use crate::input::scene::CanvasSceneInput;
-use crate::input::layout::LayoutExtras;
 use crate::world::RapierSceneWorld;
 
 impl<N: Clone + Eq + Hash> RapierLayout<N> {

@@ -7,8 +7,8 @@ use super::heat::Heat;
 use super::state::RapierLayoutState;
 use super::sync_out::FrameReport;
 use super::RapierLayout;
-use crate::input::layout::DeltaMap;
 use crate::config::REST_TIME;
+use crate::input::layout::DeltaMap;
 use crate::timestep::StepPlan;
 
 /// The convergence signal.

@@ -12,11 +12,11 @@ use super::drag::Flight;
 use super::heat::Heat;
 use super::matching::Matching;
 use super::rest::Rest;
-use crate::config::REST_TIME;
 use super::RapierLayout;
 use crate::config::RapierLayoutConfig;
-use crate::forces::{Forces, SavedForces};
+use crate::config::REST_TIME;
 use crate::input::snapshot_error::{check_counters, SnapshotError};
+use crate::simulate::{Forces, SavedForces};
 use crate::world::saved::SavedWorld;
 use crate::world::RapierSceneWorld;
 

@@ -7,9 +7,9 @@
 use std::hash::Hash;
 
 use super::RapierLayout;
+use crate::input::layout::LayoutExtras;
 use crate::input::scene::CanvasSceneInput;
 use crate::input::validation::{problems, LayoutError};
-use crate::input::layout::LayoutExtras;
 
 impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// What the last call left out and why, in scene order (nodes, then edges, then the

@@ -9,9 +9,9 @@ use rapier2d::prelude::Vector;
 
 use super::matching::{Matching, NO_SLOT};
 use super::RapierLayout;
+use crate::input::layout::{DeltaMap, IdHasher};
 use crate::input::scene::CanvasSceneInput;
 use crate::input::validation::{position_in_range, MAX_COORDINATE};
-use crate::input::layout::{DeltaMap, IdHasher};
 use crate::world::RapierSceneWorld;
 
 /// What one call reports.

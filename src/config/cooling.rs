@@ -22,6 +22,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::sanitize::finite_or;
+use crate::world::spring_scale::blended;
 
 /// The cooling schedule of [`RapierLayoutConfig::cooling`](crate::RapierLayoutConfig::cooling).
 ///
@@ -254,5 +255,38 @@ impl Cooling {
         } else {
             floor
         }
+    }
+}
+
+/// How the forces on a node scale with its own heat after a local disturbance
+/// ([`Cooling::reheat_hops`](crate::config::Cooling::reheat_hops)): as they did when the whole
+/// layout was that hot, so a heated neighbourhood replays the schedule that laid it out.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct HeatLaw {
+    /// The layout's heat (1 without a schedule).
+    pub(crate) alpha: f32,
+    pub(crate) cooling: Option<Cooling>,
+    /// The springs' blend from `heat^spring_exponent` toward the heat
+    /// ([`Cooling::stretch_limit`](crate::config::Cooling::stretch_limit)).
+    pub(crate) blend: f32,
+}
+
+impl HeatLaw {
+    /// The factors on a node's springs and on its other forces for its own heat `own`:
+    /// what its heat gives them over what the layout's gives. `None` for a node no
+    /// hotter than the layout.
+    pub(crate) fn boosts(&self, own: f32) -> Option<(f32, f32)> {
+        let cooling = self.cooling.filter(|_| own > self.alpha)?;
+        let springs = |heat: f32| {
+            let near = cooling.spring_scale(heat);
+            if self.blend > 0.0 {
+                blended(near, heat, self.blend)
+            } else {
+                near
+            }
+        };
+        let boost = springs(own) / springs(self.alpha);
+        let boost = if boost.is_finite() { boost } else { 1.0 };
+        Some((boost, own / self.alpha))
     }
 }

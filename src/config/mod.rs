@@ -15,9 +15,9 @@ use serde::{Deserialize, Serialize};
 
 use crate::world::bindings::PhysicsMaterial;
 
+mod body_kind;
 mod contacts;
 pub(crate) mod cooling;
-mod body_kind;
 mod frame;
 pub(crate) mod groups;
 mod presets;
@@ -28,9 +28,9 @@ mod springs;
 pub(crate) mod stress;
 mod throw;
 
-pub use contacts::{ContactModel, ContactSoftness, Contacts};
-pub use body_kind::BodyKindPolicy;
 pub use crate::world::EdgeJoint;
+pub use body_kind::BodyKindPolicy;
+pub use contacts::{ContactModel, ContactSoftness, Contacts};
 pub use frame::FrameLimits;
 pub use groups::GroupForce;
 pub use repulsion::Repulsion;

@@ -7,8 +7,8 @@
 use euclid::default::{Point2D, Vector2D};
 
 use super::pairs::{PAIRS_AT_LEAST, PAIRS_PER_BODY};
-use crate::sort::counting_sort;
 use crate::parallel;
+use crate::sort::counting_sort;
 
 /// A cell's key: row in the high half, column in the low half, both offset to be
 /// non-negative, so keys sort row by row.

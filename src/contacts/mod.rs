@@ -28,8 +28,8 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::Vector;
 
-use crate::forces::Bodies;
 use crate::config::ContactSoftness;
+use crate::forces::Bodies;
 use crate::world::{RapierSceneWorld, SlotsView};
 
 mod gather;

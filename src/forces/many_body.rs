@@ -3,10 +3,14 @@
 //! substep and pushes the awake dynamic ones. The tree is `forces/barnes_hut`; the
 //! centre pull is `forces/center.rs`.
 
+use std::hash::Hash;
+
 use euclid::default::{Point2D, Vector2D};
 
 use super::barnes_hut::ManyBody;
-use crate::config::Repulsion;
+use super::targets::NodeTargets;
+use super::{BodyForce, ForceContext, ForceSums, Lane, SpareFrame};
+use crate::config::{RapierLayoutConfig, Repulsion};
 use crate::sanitize::finite_or;
 
 /// Every body pushes every other: `strength × heat / d`, through the tree.
@@ -19,7 +23,7 @@ impl ManyBodyForce {
     /// Writes each body's repulsion at `heat` into `forces` (zero for the bodies not
     /// `pushed`), from a tree built over every point. It writes every entry, so it
     /// comes before the forces that add to them.
-    pub(crate) fn apply(
+    pub(crate) fn push(
         &mut self,
         repulsion: &Repulsion,
         heat: f32,
@@ -33,5 +37,39 @@ impl ManyBodyForce {
         let min_distance = finite_or(repulsion.min_distance, 1.0).max(1e-3);
         self.tree
             .forces(strength, theta, min_distance, |s| pushed[s], forces);
+    }
+}
+
+impl<N: Clone + Eq + Hash> BodyForce<N> for ManyBodyForce {
+    fn is_active(&self, config: &RapierLayoutConfig, _: &NodeTargets) -> bool {
+        config.repulsion.is_some()
+    }
+
+    /// From positions alone, so beside the springs.
+    fn lane(&self) -> Lane {
+        Lane::Spare
+    }
+
+    fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
+        let spare = SpareFrame {
+            config: frame.config,
+            points: frame.points,
+            pushed: frame.pushed,
+            heat: frame.heat,
+        };
+        BodyForce::<N>::apply_spare(self, &spare, out);
+    }
+
+    /// Writes every body's entry of `out.forces`: the first force of the registry.
+    fn apply_spare(&mut self, frame: &SpareFrame<'_>, out: &mut ForceSums) {
+        if let Some(repulsion) = &frame.config.repulsion {
+            self.push(
+                repulsion,
+                frame.heat,
+                frame.points,
+                frame.pushed,
+                &mut out.forces,
+            );
+        }
     }
 }

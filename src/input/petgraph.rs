@@ -9,8 +9,8 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 use petgraph::visit::{EdgeRef, IntoEdgeReferences, IntoNodeReferences, NodeRef};
 
-use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput};
 use crate::input::layout::IdHasher;
+use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput};
 
 /// The spacing of the start spiral: node `i` starts `SPIRAL_SPACING · √(0.5 + i)` units
 /// from the origin at angle `i · π (3 − √5)`, d3-force's phyllotaxis at 2.2 times its

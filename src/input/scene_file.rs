@@ -9,9 +9,9 @@
 use euclid::default::Point2D;
 use serde::{Deserialize, Serialize};
 
+use crate::input::layout::LayoutExtras;
 use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput};
 use crate::input::validation::{validate, LayoutError};
-use crate::input::layout::LayoutExtras;
 
 /// One node of a scene file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

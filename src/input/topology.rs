@@ -4,9 +4,9 @@
 use std::collections::{HashMap, HashSet};
 use std::hash::Hash;
 
+use crate::input::layout::{IdHasher, LayoutExtras};
 use crate::input::scene::CanvasSceneInput;
 use crate::input::validation::node_is_valid;
-use crate::input::layout::{IdHasher, LayoutExtras};
 
 /// Fixed seeds: the hash of a topology is the same in every layout of a build, so two
 /// layouts fed the same session agree on it.

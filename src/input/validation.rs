@@ -6,9 +6,9 @@ use std::hash::Hash;
 
 use euclid::default::Point2D;
 
+use crate::input::layout::{IdHasher, LayoutExtras};
 use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
-use crate::input::layout::{IdHasher, LayoutExtras};
 
 /// The largest coordinate a node's position may have, in world units (either sign).
 /// Beyond it an `f32` resolves positions to more than 64 units, rapier's contacts and

@@ -8,13 +8,13 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::Vector;
 
-use crate::graph::{Graph, UNREACHED};
 use super::model::SparseStress;
 use super::start::{global_start, StartPlan};
 use crate::config::{StressModel, StressStart};
+use crate::graph::{Graph, UNREACHED};
+use crate::input::layout::LayoutExtras;
 use crate::input::scene::CanvasSceneInput;
 use crate::input::topology::Topology;
-use crate::input::layout::LayoutExtras;
 use crate::world::bindings::ColliderSpec;
 use crate::world::RapierSceneWorld;
 
@@ -76,9 +76,7 @@ pub(crate) fn start_world<N: Clone + Eq + Hash>(
             start.hop_length
         }
         // A saved picture: the scale it was drawn at.
-        _ if origin.cold_start => {
-            picture_scale(world, &graph, &model).unwrap_or(stress.hop_length)
-        }
+        _ if origin.cold_start => picture_scale(world, &graph, &model).unwrap_or(stress.hop_length),
         _ => stress.hop_length,
     };
     world.set_hop_length(hop);

@@ -5,8 +5,8 @@
 //! `ε / w_max` over the passes. A term moves its own node only; the pair's other node
 //! takes its own step when its turn comes. Positions are in hop units.
 
-use crate::graph::{Graph, UNREACHED};
 use super::model::SparseStress;
+use crate::graph::{Graph, UNREACHED};
 
 /// The last passes' step against the heaviest term: `ε` of s_gd2.
 const EPSILON: f32 = 0.1;

@@ -6,11 +6,11 @@ use std::collections::HashMap;
 
 use euclid::default::Point2D;
 
-use crate::graph::{Graph, UNREACHED};
 use super::mds::pivot_mds;
 use super::model::SparseStress;
 use super::pack::pack_components;
 use super::sgd::{stress_passes, Rng};
+use crate::graph::{Graph, UNREACHED};
 use crate::input::layout::IdHasher;
 
 /// Pivots pivot MDS uses per component (its cost grows with their square).

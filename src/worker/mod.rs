@@ -15,10 +15,10 @@ use euclid::default::Point2D;
 
 use self::thread::{Command, Slot, Worker};
 use crate::config::RapierLayoutConfig;
+use crate::input::layout::{LayoutExtras, NodeMap, NodeSet};
 use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput};
 use crate::input::shape::NodeShape;
-use crate::input::layout::{LayoutExtras, NodeMap, NodeSet};
 #[cfg(doc)]
 use crate::RapierLayout;
 

@@ -16,10 +16,10 @@ use euclid::default::Point2D;
 use super::LayoutFrame;
 use crate::adapter::{RapierLayout, RapierLayoutState};
 use crate::config::RapierLayoutConfig;
+use crate::input::layout::{Layout, LayoutExtras, NodeMap};
 use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
 use crate::input::shape::NodeShape;
-use crate::input::layout::{Layout, LayoutExtras, NodeMap};
 
 /// One host message. The worker applies them in the order they were sent.
 pub(super) enum Command<N> {

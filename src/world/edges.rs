@@ -10,8 +10,8 @@ use rapier2d::prelude::GenericJoint;
 use super::rapier_joint::{max_resolved_stiffness, rapier_joint, scaled_spring};
 use super::slot::{joint_key, JointSlot, SpringView};
 use super::RapierSceneWorld;
-use crate::world::EdgeJoint;
 use crate::world::bindings::EdgeJointSpec;
+use crate::world::EdgeJoint;
 
 impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     /// Builds one spring joint per edge. Edges naming a node without a body, self-loops

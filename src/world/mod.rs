@@ -51,7 +51,7 @@ pub use bindings::{
 pub use edge_joint::EdgeJoint;
 pub use events::SceneEvent;
 pub use rapier_joint::max_resolved_stiffness;
-mod spring_scale;
+pub(crate) mod spring_scale;
 mod stepping;
 
 use events::CollisionCollector;

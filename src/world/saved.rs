@@ -22,8 +22,8 @@ use super::seal::seal_of;
 use super::slot::{HostSync, JointSlot, NodeSlot};
 use super::spring_scale::{SpringScale, StretchCache};
 use super::{RapierSceneWorld, WorldOptions};
-use crate::input::snapshot_error::{check_counters, SnapshotError};
 use crate::input::layout::IdHasher;
+use crate::input::snapshot_error::{check_counters, SnapshotError};
 
 /// Everything a world needs to continue where it was. Written with the seals of
 /// rapier's sets (hashed as it is written: a snapshot kept in memory pays nothing for

@@ -12,9 +12,9 @@ use rapier2d::prelude::{
 use serde::{Deserialize, Serialize};
 
 use super::RapierSceneWorld;
-use crate::world::EdgeJoint;
 use crate::input::node_forces::AxisLock;
 use crate::world::bindings::ColliderSpec;
+use crate::world::EdgeJoint;
 
 /// One node's body and the bookkeeping kept for it; its id is kept apart
 /// (`RapierSceneWorld::ids`, same index), so that the slots, free of the host's id

@@ -8,8 +8,8 @@ use euclid::default::Point2D;
 use serde::{Deserialize, Serialize};
 
 use super::RapierSceneWorld;
-use crate::world::EdgeJoint;
 use crate::sanitize::{finite_or, positive_or};
+use crate::world::EdgeJoint;
 
 /// The factor on every spring's stiffness and damping, and the inputs of the last
 /// [`RapierSceneWorld::set_spring_scale_by_stretch`] that chose it.
@@ -137,7 +137,7 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
             0.0
         };
         let scale = if blend > 0.0 {
-            finite_or(near.powf(1.0 - blend) * far.powf(blend), near)
+            finite_or(blended(near, far, blend), near)
         } else {
             near
         };
@@ -237,4 +237,12 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
     pub fn applied_spring_scale(&self) -> f32 {
         self.spring_scale.applied
     }
+}
+
+/// The spring scale `blend` of the way from `near` to `far`, geometrically:
+/// `near^(1 - blend) × far^blend`. The one blend law of the springs' scale: the world's
+/// re-tune by stretch (above) and a heated node's springs
+/// ([`HeatLaw`](crate::config::cooling::HeatLaw)) both take it.
+pub(crate) fn blended(near: f32, far: f32, blend: f32) -> f32 {
+    near.powf(1.0 - blend) * far.powf(blend)
 }

@@ -6,8 +6,8 @@
 //! Below that, one whole sort on the calling thread, where a sort of that size costs
 //! less than handing it to the pool.
 
-use crate::sort::counting_sort;
 use crate::parallel;
+use crate::sort::counting_sort;
 
 /// From this many entries on, the sort goes bucket by bucket.
 const BUCKETS_FROM: usize = 8_192;

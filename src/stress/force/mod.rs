@@ -15,14 +15,14 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 
 use crate::forces::targets::NodeTargets;
-use crate::forces::{BodyForce, ForceContext, ForceSums};
+use crate::forces::{BodyForce, ForceContext, ForceSums, Lane, SpareFrame};
 use sums::{padded, pivot_pull};
 
 mod sums;
-use crate::config::RapierLayoutConfig;
-use crate::parallel;
-use crate::graph::Graph;
 use super::model::{Reach, SparseStress};
+use crate::config::RapierLayoutConfig;
+use crate::graph::Graph;
+use crate::parallel;
 use crate::world::RapierSceneWorld;
 
 /// The stress terms of a world, and the pivot terms' last sums.
@@ -63,6 +63,10 @@ pub(crate) struct StressForce {
     /// that wakes finds the terms it rested with.
     #[serde(skip)]
     pub(crate) hold_cold: bool,
+    /// What [`step_for`](Self::step_for) found of this substep, from `prepare` to
+    /// `finish`.
+    #[serde(skip)]
+    step: Option<TermStep>,
 }
 
 impl StressForce {
@@ -113,7 +117,7 @@ impl StressForce {
     }
 
     /// Works the pivot terms out afresh for every node on the next substep
-    /// ([`prepare`](Self::prepare) and [`work_out`](Self::work_out)), instead of
+    /// ([`step_for`](Self::step_for) and [`work_out`](Self::work_out)), instead of
     /// holding them: what a rest's balance is measured with, so that no node holds a pull worked out where the pivots were long
     /// ago.
     pub(crate) fn renew_pivot_terms(&mut self) {
@@ -157,7 +161,7 @@ impl StressForce {
     /// host's node type need not be shared between threads): the model brought up to
     /// date, the pivots' positions when their terms are due, and which nodes are heated.
     /// `None` when the terms pull nothing (no model settings, or no finite stiffness).
-    pub(crate) fn prepare<N: Clone + Eq + Hash>(
+    pub(crate) fn step_for<N: Clone + Eq + Hash>(
         &mut self,
         frame: &ForceContext<'_, N>,
     ) -> Option<TermStep> {
@@ -360,9 +364,36 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for StressForce {
         config.stress.is_some()
     }
 
+    /// From positions alone once prepared, so beside the springs.
+    fn lane(&self) -> Lane {
+        Lane::Spare
+    }
+
+    fn prepare(&mut self, frame: &ForceContext<'_, N>) {
+        self.step = self.step_for(frame);
+    }
+
     fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
-        if let Some(step) = self.prepare(frame) {
+        BodyForce::<N>::prepare(self, frame);
+        let spare = SpareFrame {
+            config: frame.config,
+            points: frame.points,
+            pushed: frame.pushed,
+            heat: frame.heat,
+        };
+        BodyForce::<N>::apply_spare(self, &spare, out);
+        BodyForce::<N>::finish(self, out);
+    }
+
+    fn apply_spare(&mut self, frame: &SpareFrame<'_>, _: &mut ForceSums) {
+        if let Some(step) = self.step {
             self.work_out(step, frame.points, frame.pushed);
+        }
+    }
+
+    /// Adds the terms worked out beside the springs: the last of the registry.
+    fn finish(&mut self, out: &mut ForceSums) {
+        if let Some(step) = self.step.take() {
             self.add_to(step, out);
         }
     }
@@ -373,7 +404,7 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for StressForce {
     }
 }
 
-/// What [`StressForce::prepare`] found of a substep, for its terms.
+/// What [`StressForce::step_for`] found of a substep, for its terms.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct TermStep {
     hop: f32,

@@ -146,20 +146,42 @@ pub(super) struct Flight<N> {
     pub(super) landed: bool,
 }
 
+/// The host sync's state between calls: kinematic bodies moving to the host's
+/// positions, thrown nodes in flight, and the gravity of the last call.
+#[derive(Debug)]
+pub(super) struct Host<N> {
+    /// Kinematic bodies moving to the host's positions over this call's substeps.
+    pub(super) drives: Vec<Drive>,
+    /// Thrown nodes in flight.
+    pub(super) flights: Vec<Flight<N>>,
+    /// The gravity of the last call: a change is a disturbance.
+    pub(super) gravity: Vector2D<f32>,
+}
+
+impl<N> Default for Host<N> {
+    fn default() -> Self {
+        Self {
+            drives: Vec::new(),
+            flights: Vec::new(),
+            gravity: Vector2D::zero(),
+        }
+    }
+}
+
 impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// Lands the thrown nodes that turned back, slowed, were grabbed or left (they take
     /// the material's damping again), and forgets those that rest.
     pub(super) fn land_flights(&mut self) {
-        if self.flights.is_empty() {
+        if self.host.flights.is_empty() {
             return;
         }
         let damping = finite_or(self.config.material.linear_damping, 0.0).max(0.0);
         let rest_speed = self.config.rest.speed;
         let Some(world) = self.world.as_mut() else {
-            self.flights.clear();
+            self.host.flights.clear();
             return;
         };
-        self.flights.retain_mut(|flight| {
+        self.host.flights.retain_mut(|flight| {
             let Some(s) = world.slot_of(&flight.id) else {
                 return false;
             };

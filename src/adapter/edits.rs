@@ -36,8 +36,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         // `topology_changed`, which may look at another scene).
         self.matching.topology_problems = topology.problems;
         self.matching.remember_edges(scene);
-        let same_edges = topology.hash == self.topology_hash;
-        if self.world.is_some() && same_edges && topology.weight_hash == self.weight_hash {
+        let same_edges = topology.hash == self.built.topology_hash;
+        if self.world.is_some() && same_edges && topology.weight_hash == self.built.weight_hash {
             return false;
         }
         let rebuild = self.config.topology_update == TopologyUpdate::Rebuild && !same_edges;
@@ -47,8 +47,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             // Also a weight edit alone: its joints are re-tuned in place.
             self.patch_world(scene, extras, &topology);
         }
-        self.topology_hash = topology.hash;
-        self.weight_hash = topology.weight_hash;
+        self.built.topology_hash = topology.hash;
+        self.built.weight_hash = topology.weight_hash;
         if let Some(world) = self.world.as_mut() {
             world.set_topology_hash(topology.hash);
         }
@@ -66,12 +66,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         topology: &Topology,
     ) {
         let mut world = RapierSceneWorld::with_options(self.world_options());
-        world.set_timestep(self.joint_dt);
+        world.set_timestep(self.built.joint_dt);
         world.set_springs_as_forces(self.config.springs.model == SpringModel::Forces);
         // A new world counts its versions from 0 again.
         self.forces.reset();
         // Contacts stay out of the first unfolding until the heat lets them in.
-        world.set_contacts_enabled(!(self.heat.unfolding || self.rebuilds == 0));
+        world.set_contacts_enabled(!(self.heat.state.unfolding || self.built.rebuilds == 0));
         insert_missing_nodes(
             &mut world,
             scene,
@@ -83,8 +83,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         // NOTE: before the joints, which rest at the hop length it chooses.
         let origin = WorldOrigin {
             previous_hop: self.world.as_ref().and_then(RapierSceneWorld::hop_length),
-            first: self.rebuilds == 0,
-            cold_start: self.cold_start,
+            first: self.built.rebuilds == 0,
+            cold_start: self.built.cold_start,
         };
         let model = self
             .config
@@ -106,16 +106,16 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 .adopt(&world, model, pivots, stress.exact_hops.max(1));
         }
         // A new world starts again: every body at rest where the host has it.
-        self.disturbances.reset();
-        self.disturbances.touch_everything();
+        self.heat.spread.reset();
+        self.heat.spread.touch_everything();
         self.world = Some(world);
-        self.applied = Some(self.config.clone());
-        if self.rebuilds == 0 {
+        self.built.applied = Some(self.config.clone());
+        if self.built.rebuilds == 0 {
             // Later builds are disturbances: they reheat.
-            self.heat.alpha = 1.0;
-            self.heat.unfolding = true;
+            self.heat.state.alpha = 1.0;
+            self.heat.state.unfolding = true;
         }
-        self.rebuilds += 1;
+        self.built.rebuilds += 1;
     }
 
     /// Inserts and removes only what changed; untouched bodies keep their motion.
@@ -155,7 +155,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         for id in &gone {
             world.remove_node(id);
         }
-        world.set_timestep(self.joint_dt);
+        world.set_timestep(self.built.joint_dt);
         // Pinned and dragged nodes go where the host puts them.
         let held = |id: &N| {
             config.body_kind_policy == BodyKindPolicy::AllKinematic
@@ -239,12 +239,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         // In scene order (never the set's): wakes reach rapier in this order.
         for (id, _) in inserted.iter().filter(|(_, seated)| *seated) {
             if let Some(s) = world.slot_of(id) {
-                self.disturbances.touch_settling(s);
+                self.heat.spread.touch_settling(s);
             }
         }
         for id in &touched {
             if let Some(s) = world.slot_of(id) {
-                self.disturbances.touch(s, true);
+                self.heat.spread.touch(s, true);
                 // Springs applied as forces link no rapier island that would wake them.
                 let body = world.body_at_mut(s);
                 if body.is_dynamic() && body.is_sleeping() {
@@ -252,7 +252,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 }
             }
         }
-        self.patches += 1;
+        self.built.patches += 1;
     }
 }
 

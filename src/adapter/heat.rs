@@ -6,6 +6,8 @@
 
 use std::hash::Hash;
 
+use super::disturbance::Disturbances;
+use super::rest::Rest;
 use super::RapierLayout;
 use crate::config::cooling::Cooling;
 use crate::config::ContactSoftness;
@@ -50,6 +52,18 @@ impl Default for Heat {
     }
 }
 
+/// The heat stage's state: a cooling layout's heat, what this call disturbed (for a
+/// local reheat), and the convergence signal.
+#[derive(Debug, Default)]
+pub(super) struct HeatStage {
+    /// The heat and where it is in its schedule.
+    pub(super) state: Heat,
+    /// The convergence signal (`rest.rs`).
+    pub(super) rest: Rest,
+    /// What this call disturbed, and the spread of its heat (`disturbance.rs`).
+    pub(super) spread: Disturbances,
+}
+
 /// What the heat makes of one call's simulation.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct FrameHeat {
@@ -69,27 +83,27 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.end_unfolding();
         }
         if disturbed {
-            self.heat.halted = false;
-            if self.disturbances.everything() {
+            self.heat.state.halted = false;
+            if self.heat.spread.everything() {
                 // Laid out again as a whole: toward the stress minimum, not the rest.
                 self.forces.forget_rest();
             }
         }
-        if self.heat.halted {
+        if self.heat.state.halted {
             return false;
         }
         if let Some(cooling) = self.config.cooling {
             if disturbed {
                 match (cooling.reheat_hops, self.world.as_mut()) {
-                    (Some(hops), Some(world)) if !self.disturbances.everything() => {
+                    (Some(hops), Some(world)) if !self.heat.spread.everything() => {
                         // Only near what was touched.
                         let heat = cooling.reheated(0.0);
                         let coasting = cooling.coasting_heat();
-                        self.disturbances.spread(world, hops, heat, coasting);
-                        self.heat.hottest = self.heat.hottest.max(heat);
+                        self.heat.spread.spread(world, hops, heat, coasting);
+                        self.heat.state.hottest = self.heat.state.hottest.max(heat);
                     }
                     (_, world) => {
-                        self.heat.alpha = cooling.reheated(self.heat.alpha);
+                        self.heat.state.alpha = cooling.reheated(self.heat.state.alpha);
                         self.forces.forget_rest();
                         // All of it: springs applied as forces and the layout's own
                         // disk separation link no rapier island that would wake it.
@@ -100,7 +114,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 }
                 // Also when the reheat cannot lift the heat off its floor: a disturbed
                 // layout gets half a second before it is stopped again.
-                self.heat.cold_time = 0.0;
+                self.heat.state.cold_time = 0.0;
             }
         }
         true
@@ -139,13 +153,13 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     pub fn reheat(&mut self, alpha: f32) {
         if let Some(cooling) = self.config.cooling {
             let alpha = if alpha.is_finite() { alpha } else { 1.0 };
-            self.heat.alpha = self.heat.alpha.max(alpha.clamp(cooling.floor(), 1.0));
-            self.heat.cold_time = 0.0;
+            self.heat.state.alpha = self.heat.state.alpha.max(alpha.clamp(cooling.floor(), 1.0));
+            self.heat.state.cold_time = 0.0;
         }
-        self.heat.halted = false;
+        self.heat.state.halted = false;
         self.forces.forget_rest();
-        self.rest.converged = false;
-        self.rest.calm_time = 0.0;
+        self.heat.rest.converged = false;
+        self.heat.rest.calm_time = 0.0;
         if let Some(world) = self.world.as_mut() {
             world.wake_dynamic_bodies();
         }
@@ -158,7 +172,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// has fallen to [`Cooling::first_contact_heat`](crate::config::Cooling::first_contact_heat).
     pub(super) fn heat_world(&mut self) -> FrameHeat {
         let config = &self.config;
-        let heat = self.heat;
+        let heat = self.heat.state;
         let mut contact_softness = config.contacts.softness;
         let Some(world) = self.world.as_mut() else {
             return FrameHeat {
@@ -207,10 +221,10 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     pub(super) fn cool(&mut self, simulated: f32) {
         match self.config.cooling {
             Some(cooling) => {
-                self.heat.alpha = cooling.cooled(self.heat.alpha, simulated);
+                self.heat.state.alpha = cooling.cooled(self.heat.state.alpha, simulated);
                 self.cool_nodes(cooling, simulated);
                 self.stop_when_cold(cooling.floor(), simulated);
-                if self.heat.alpha <= cooling.floor() {
+                if self.heat.state.alpha <= cooling.floor() {
                     self.end_unfolding();
                 }
             }
@@ -223,10 +237,10 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// Cools every node heated by a local disturbance by `simulated` seconds of the
     /// schedule; a node as cold as the layout takes the layout's heat again.
     fn cool_nodes(&mut self, cooling: Cooling, simulated: f32) {
-        if self.heat.hottest <= 0.0 {
+        if self.heat.state.hottest <= 0.0 {
             return;
         }
-        let alpha = self.heat.alpha;
+        let alpha = self.heat.state.alpha;
         let mut hottest = 0.0_f32;
         if let Some(world) = self.world.as_mut() {
             for s in 0..world.slot_count() {
@@ -238,16 +252,16 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 }
             }
         }
-        self.heat.hottest = hottest;
+        self.heat.state.hottest = hottest;
     }
 
     /// Ends the first unfolding: contacts in (if they were left out) and firm from here
     /// on, so interactions always push. Returns whether contacts were let in.
     pub(super) fn end_unfolding(&mut self) -> bool {
-        if !self.heat.unfolding {
+        if !self.heat.state.unfolding {
             return false;
         }
-        self.heat.unfolding = false;
+        self.heat.state.unfolding = false;
         match self.world.as_mut() {
             Some(world) if !world.contacts_enabled() => {
                 world.set_contacts_enabled(true);

@@ -54,7 +54,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let matches = self.matching.matches();
         let trusted = matches.len() == scene.nodes.len()
             && self.matching.bad_nodes == 0
-            && self.topology_hash != 0
+            && self.built.topology_hash != 0
             && self.matching.knows_edges()
             && self.config.body_kind_policy != BodyKindPolicy::AllKinematic;
         trusted

@@ -212,7 +212,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 world.is_some_and(|w| w.contains_node(id))
             })
         };
-        if !nodes_changed && self.topology_hash != 0 && self.matching.edges_unchanged(scene) {
+        if !nodes_changed && self.built.topology_hash != 0 && self.matching.edges_unchanged(scene) {
             // Debug builds (the tests), up to a few thousand nodes: the cheap checks
             // skip only what the topology's hash would not see either, or a layout
             // restored from a save (which computes it afresh) would part ways.
@@ -220,10 +220,10 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             if scene.nodes.len() <= CHECKED_NODES {
                 let hash = topology().hash;
                 assert_eq!(
-                    hash, self.topology_hash,
+                    hash, self.built.topology_hash,
                     "the cheap checks saw no change, but the scene's topology hash {hash} is \
                      not the world's {}",
-                    self.topology_hash
+                    self.built.topology_hash
                 );
             }
             return None;

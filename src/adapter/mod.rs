@@ -31,10 +31,10 @@ use crate::input::validation::{validate, LayoutError};
 use crate::profile::{StepProfile, Stopwatch};
 use crate::sanitize::finite_or;
 use crate::simulate::Forces;
-use crate::timestep::DEFAULT_TIMESTEP;
 use crate::world::events::SceneEvent;
 use crate::world::RapierSceneWorld;
 
+mod built;
 mod disturbance;
 mod drag;
 mod edits;
@@ -52,11 +52,11 @@ mod substeps;
 mod sync_in;
 mod sync_out;
 
-use disturbance::Disturbances;
-use drag::{Drive, Flight};
-use heat::Heat;
+use built::Built;
+use drag::Host;
+use heat::HeatStage;
 use matching::Matching;
-use rest::Rest;
+use skipped::Report;
 pub use resume::LayoutSnapshot;
 pub use state::RapierLayoutState;
 
@@ -95,33 +95,18 @@ pub struct RapierLayout<N> {
     /// collision changes rebuild the world, joint changes replace the joints).
     pub config: RapierLayoutConfig,
     world: Option<RapierSceneWorld<N>>,
-    /// The configuration the world was built with.
-    applied: Option<RapierLayoutConfig>,
-    topology_hash: u64,
-    /// The order-free hash of the edge weights the world's joints were built with.
-    weight_hash: u64,
-    rebuilds: u64,
-    patches: u64,
-    /// Scene nodes matched to bodies this call.
+    /// What the world was built from and how often: stage 2 and 3.
+    built: Built,
+    /// Scene nodes matched to bodies this call: stage 3.
     matching: Matching<N>,
-    /// Kinematic bodies moving to the host's positions over this call's substeps.
-    drives: Vec<Drive>,
-    /// Thrown nodes in flight.
-    flights: Vec<Flight<N>>,
-    heat: Heat,
-    /// What this call disturbed, for a local reheat.
-    disturbances: Disturbances,
-    rest: Rest,
+    /// Drives, throws and gravity: stage 4.
+    host: Host<N>,
+    /// The heat, what this call disturbed, and the rest signal: stages 5 and 8.
+    heat: HeatStage,
+    /// The forces, their registry and the disk separation: stage 6.
     forces: Forces<N>,
-    recovered: Vec<N>,
-    /// What the last call left out ([`RapierLayout::skipped`]).
-    skipped: Vec<LayoutError<N>>,
-    /// The timestep new and re-tuned joints are tuned for: this call's fixed timestep.
-    joint_dt: f32,
-    /// The gravity of the last call: a change is a disturbance.
-    gravity: Vector2D<f32>,
-    /// Built by [`RapierLayout::at_rest`]: the first world starts cold.
-    cold_start: bool,
+    /// What the last call recovered and left out: stage 7.
+    report: Report<N>,
     /// [`RapierLayout::set_pool_awake`].
     pool_awake: bool,
 }
@@ -131,10 +116,10 @@ impl<N> std::fmt::Debug for RapierLayout<N> {
         f.debug_struct("RapierLayout")
             .field("config", &self.config)
             .field("world", &self.world)
-            .field("topology_hash", &self.topology_hash)
-            .field("rebuilds", &self.rebuilds)
-            .field("patches", &self.patches)
-            .field("converged", &self.rest.converged)
+            .field("topology_hash", &self.built.topology_hash)
+            .field("rebuilds", &self.built.rebuilds)
+            .field("patches", &self.built.patches)
+            .field("converged", &self.heat.rest.converged)
             .finish_non_exhaustive()
     }
 }
@@ -159,23 +144,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         Self {
             config,
             world: None,
-            applied: None,
-            topology_hash: 0,
-            weight_hash: 0,
-            rebuilds: 0,
-            patches: 0,
+            built: Built::default(),
             matching: Matching::default(),
-            drives: Vec::new(),
-            flights: Vec::new(),
-            heat: Heat::default(),
-            disturbances: Disturbances::default(),
-            rest: Rest::default(),
+            host: Host::default(),
+            heat: HeatStage::default(),
             forces: Forces::default(),
-            recovered: Vec::new(),
-            skipped: Vec::new(),
-            joint_dt: DEFAULT_TIMESTEP,
-            gravity: Vector2D::zero(),
-            cold_start: false,
+            report: Report::default(),
             pool_awake: true,
         }
     }
@@ -188,7 +162,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// The hash of the topology (node ids, undirected edges, pins) the world models; 0
     /// before the first build and after an empty scene. Independent of input order.
     pub fn current_topology_hash(&self) -> u64 {
-        self.topology_hash
+        self.built.topology_hash
     }
 
     /// The persistent world, if any.
@@ -198,12 +172,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
 
     /// How many times a world was built from scratch.
     pub fn rebuild_count(&self) -> u64 {
-        self.rebuilds
+        self.built.rebuilds
     }
 
     /// How many topology changes were applied to the existing world in place.
     pub fn patch_count(&self) -> u64 {
-        self.patches
+        self.built.patches
     }
 
     /// Starts measuring where the calls' time goes ([`StepProfile`], from zero), or
@@ -277,7 +251,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         extras: &LayoutExtras<N>,
     ) -> bool {
         self.candidate_topology(scene, extras)
-            .is_some_and(|topology| topology.hash != self.topology_hash)
+            .is_some_and(|topology| topology.hash != self.built.topology_hash)
     }
 
     /// The layout's heat under [`RapierLayoutConfig::cooling`] after the last call: 1
@@ -299,7 +273,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// assert!(alpha < 0.5 && alpha > 0.1, "one second of a 4.5 s schedule: {alpha}");
     /// ```
     pub fn heat(&self) -> Option<f32> {
-        self.config.cooling.map(|_| self.heat.alpha)
+        self.config.cooling.map(|_| self.heat.state.alpha)
     }
 
     /// The heat the forces on `node` act with after the last call: its own after a local
@@ -369,16 +343,16 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             return false;
         }
         // The next call works the topology out again and inserts the id anew.
-        self.topology_hash = 0;
+        self.built.topology_hash = 0;
         self.matching.forget_edges();
-        self.flights.retain(|flight| &flight.id != node);
+        self.host.flights.retain(|flight| &flight.id != node);
         true
     }
 
     /// Nodes whose bodies went non-finite during the last call (rapier quarantined
     /// them) and were put back, at rest, where they last were valid.
     pub fn recovered_nodes(&self) -> &[N] {
-        &self.recovered
+        &self.report.recovered
     }
 
     /// Drains the contact events recorded since the last call (empty unless
@@ -467,7 +441,7 @@ impl<N: Clone + Eq + Hash> Layout<N> for RapierLayout<N> {
     /// what it did before, until a `step` has seen the change (step first, then ask; see
     /// [`Layout::is_converged`]). `state` is not read: the rest state is the layout's own.
     fn is_converged(&self, _state: &RapierLayoutState) -> bool {
-        self.world.is_some() && self.rest.converged
+        self.world.is_some() && self.heat.rest.converged
     }
 }
 
@@ -510,9 +484,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             return DeltaMap::default();
         }
         let plan = self.plan_frame(state, dt);
-        self.disturbances.clear();
+        self.heat.spread.clear();
         let reconfigured = self.apply_config_changes();
-        let unfolding_before = self.heat.unfolding;
+        let unfolding_before = self.heat.state.unfolding;
         let cold = self.builds_cold();
         // A caller's list stands for the matching only while nothing was reconfigured.
         let known =

@@ -76,7 +76,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             }
             if was_key != key {
                 changed = true;
-                self.disturbances.touch(s, true);
+                self.heat.spread.touch(s, true);
                 let body = world.body_at_mut(s);
                 if body.is_dynamic() {
                     body.wake_up(true);

@@ -17,7 +17,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// Returns whether anything changed: a new configuration is a disturbance, since it
     /// may move what was at rest.
     pub(super) fn apply_config_changes(&mut self) -> bool {
-        let Some(applied) = &self.applied else {
+        let Some(applied) = &self.built.applied else {
             return false;
         };
         if *applied == self.config {
@@ -35,14 +35,14 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         }
         if applied.cooling.is_some() != self.config.cooling.is_some() {
             // A schedule starts hot; without one the springs have their full stiffness.
-            self.heat.alpha = 1.0;
+            self.heat.state.alpha = 1.0;
             if let Some(world) = self.world.as_mut() {
                 world.set_spring_scale(1.0);
             }
         }
         if structural {
             self.world = None;
-            self.topology_hash = 0;
+            self.built.topology_hash = 0;
         } else if applied.edge_joint != self.config.edge_joint
             || applied.springs.weight != self.config.springs.weight
             || applied.springs.model != self.config.springs.model
@@ -54,21 +54,21 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 world.set_springs_as_forces(self.config.springs.model == SpringModel::Forces);
             }
             // Forces the topology pass to re-insert every joint.
-            self.topology_hash = 0;
+            self.built.topology_hash = 0;
             self.matching.forget_edges();
         }
-        self.applied = Some(self.config.clone());
+        self.built.applied = Some(self.config.clone());
         true
     }
 
     /// The scene became empty: no world until the next non-empty scene.
     pub(super) fn drop_world(&mut self) {
         self.world = None;
-        self.topology_hash = 0;
-        self.applied = None;
+        self.built.topology_hash = 0;
+        self.built.applied = None;
         self.matching.forget_edges();
-        self.rest = Rest::default();
-        self.heat.halted = false;
+        self.heat.rest = Rest::default();
+        self.heat.state.halted = false;
         self.forces.reset();
     }
 

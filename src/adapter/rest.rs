@@ -27,22 +27,22 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     pub(super) fn track_rest(&mut self, disturbed: bool, report: &FrameReport<N>, simulated: f32) {
         let calm = report.max_speed.is_finite() && report.max_speed <= self.config.rest.speed;
         if disturbed || !calm {
-            self.rest.calm_time = 0.0;
+            self.heat.rest.calm_time = 0.0;
         } else {
-            self.rest.calm_time += simulated;
+            self.heat.rest.calm_time += simulated;
         }
-        self.rest.converged = self.rest.calm_time >= REST_TIME && report.awake == 0;
-        if self.rest.converged && self.end_unfolding() {
+        self.heat.rest.converged = self.heat.rest.calm_time >= REST_TIME && report.awake == 0;
+        if self.heat.rest.converged && self.end_unfolding() {
             // At rest before the heat let contacts in: rest again once any overlap they
             // find is parted.
-            self.rest.converged = false;
+            self.heat.rest.converged = false;
         }
-        self.rest.converged |= self.heat.halted;
-        if self.rest.converged {
+        self.heat.rest.converged |= self.heat.state.halted;
+        if self.heat.rest.converged {
             // At rest, the schedule is over: what disturbs the layout later meets its
             // coldest forces (as after the cold stop).
             if let Some(cooling) = self.config.cooling {
-                self.heat.alpha = self.heat.alpha.min(cooling.floor());
+                self.heat.state.alpha = self.heat.state.alpha.min(cooling.floor());
             }
         }
     }
@@ -54,8 +54,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         plan: &StepPlan,
     ) -> DeltaMap<N> {
         state.simulated_time += f64::from(plan.simulated());
-        self.recovered.clear();
-        self.rest.converged = true;
+        self.report.recovered.clear();
+        self.heat.rest.converged = true;
         DeltaMap::default()
     }
 
@@ -66,9 +66,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// connected graph a few bodies jostling in contact would otherwise keep the whole
     /// graph (one rapier island) awake for ever.
     pub(super) fn stop_when_cold(&mut self, floor: f32, simulated: f32) {
-        let heat: &mut Heat = &mut self.heat;
+        let heat: &mut Heat = &mut self.heat.state;
         // NOTE: a thrown node still on its way keeps the layout going.
-        if heat.alpha > floor || heat.hottest > floor || !self.flights.is_empty() {
+        if heat.alpha > floor || heat.hottest > floor || !self.host.flights.is_empty() {
             heat.cold_time = 0.0;
             return;
         }

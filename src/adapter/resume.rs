@@ -8,8 +8,9 @@ use std::hash::Hash;
 use euclid::default::Vector2D;
 use serde::{Deserialize, Serialize};
 
-use super::drag::Flight;
-use super::heat::Heat;
+use super::built::Built;
+use super::drag::{Flight, Host};
+use super::heat::{Heat, HeatStage};
 use super::matching::Matching;
 use super::rest::Rest;
 use super::RapierLayout;
@@ -151,10 +152,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// }
     /// ```
     pub fn at_rest(config: RapierLayoutConfig) -> Self {
-        Self {
-            cold_start: true,
-            ..Self::new(config)
-        }
+        let mut layout = Self::new(config);
+        layout.built.cold_start = true;
+        layout
     }
 
     /// Everything the next call needs to continue exactly where this layout is
@@ -165,19 +165,19 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         LayoutSnapshot {
             format: LayoutSnapshot::<N>::FORMAT,
             config: self.config.clone(),
-            applied: self.applied.clone(),
-            topology_hash: self.topology_hash,
-            weight_hash: self.weight_hash,
-            rebuilds: self.rebuilds,
-            patches: self.patches,
+            applied: self.built.applied.clone(),
+            topology_hash: self.built.topology_hash,
+            weight_hash: self.built.weight_hash,
+            rebuilds: self.built.rebuilds,
+            patches: self.built.patches,
             stamp: self.matching.stamp(),
-            flights: self.flights.clone(),
-            heat: self.heat,
-            rest: self.rest,
+            flights: self.host.flights.clone(),
+            heat: self.heat.state,
+            rest: self.heat.rest,
             forces: self.forces.save(),
-            joint_dt: self.joint_dt,
-            gravity: self.gravity,
-            cold_start: self.cold_start,
+            joint_dt: self.built.joint_dt,
+            gravity: self.host.gravity,
+            cold_start: self.built.cold_start,
             world: self.world.as_ref().map(RapierSceneWorld::save),
         }
     }
@@ -246,19 +246,27 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         *self = Self {
             config: snapshot.config,
             world,
-            applied: snapshot.applied,
-            topology_hash: snapshot.topology_hash,
-            weight_hash: snapshot.weight_hash,
-            rebuilds: snapshot.rebuilds,
-            patches: snapshot.patches,
+            built: Built {
+                applied: snapshot.applied,
+                topology_hash: snapshot.topology_hash,
+                weight_hash: snapshot.weight_hash,
+                rebuilds: snapshot.rebuilds,
+                patches: snapshot.patches,
+                joint_dt: snapshot.joint_dt,
+                cold_start: snapshot.cold_start,
+            },
             matching: Matching::resumed(snapshot.stamp),
-            flights: snapshot.flights,
-            heat: snapshot.heat,
-            rest: snapshot.rest,
+            host: Host {
+                flights: snapshot.flights,
+                gravity: snapshot.gravity,
+                ..Host::default()
+            },
+            heat: HeatStage {
+                state: snapshot.heat,
+                rest: snapshot.rest,
+                ..HeatStage::default()
+            },
             forces,
-            joint_dt: snapshot.joint_dt,
-            gravity: snapshot.gravity,
-            cold_start: snapshot.cold_start,
             // A setting of the host's, not of the layout's state.
             pool_awake: self.pool_awake,
             ..Self::new(RapierLayoutConfig::default())
@@ -268,7 +276,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
 
     /// Whether this call builds the first world of an [`at_rest`](Self::at_rest) layout.
     pub(super) fn builds_cold(&self) -> bool {
-        self.cold_start && self.world.is_none() && self.rebuilds == 0
+        self.built.cold_start && self.world.is_none() && self.built.rebuilds == 0
     }
 
     /// Makes the world just built the one a layout has after coming to rest: heat at its
@@ -279,19 +287,19 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let Some(world) = self.world.as_mut() else {
             return false;
         };
-        self.heat = Heat {
+        self.heat.state = Heat {
             unfolding: false,
             ..Heat::default()
         };
         if let Some(cooling) = self.config.cooling {
-            self.heat.alpha = cooling.floor();
+            self.heat.state.alpha = cooling.floor();
         }
         // Not stepped until a disturbance, with or without a cooling schedule: rapier
         // steps bodies put to sleep before their first step.
-        self.heat.halted = true;
+        self.heat.state.halted = true;
         world.set_contacts_enabled(true);
         world.sleep_dynamic_bodies_now();
-        self.rest = Rest {
+        self.heat.rest = Rest {
             calm_time: REST_TIME,
             converged: true,
         };
@@ -301,12 +309,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         if let Some(world) = self.world.as_mut() {
             let dt = world.integration_parameters().dt;
             self.forces
-                .capture_rest(world, &self.config, self.heat.alpha, dt);
+                .capture_rest(world, &self.config, self.heat.state.alpha, dt);
         }
-        self.disturbances.clear();
-        for drive in &self.drives {
-            self.disturbances.touch(drive.slot as usize, false);
+        self.heat.spread.clear();
+        for drive in &self.host.drives {
+            self.heat.spread.touch(drive.slot as usize, false);
         }
-        !self.drives.is_empty()
+        !self.host.drives.is_empty()
     }
 }

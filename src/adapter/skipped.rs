@@ -11,6 +11,25 @@ use crate::input::layout::LayoutExtras;
 use crate::input::scene::CanvasSceneInput;
 use crate::input::validation::{problems, LayoutError};
 
+/// What a call reports beside its deltas: the nodes whose bodies were recovered from a
+/// non-finite state, and what it left out.
+#[derive(Debug)]
+pub(super) struct Report<N> {
+    /// Nodes whose bodies were recovered this call ([`RapierLayout::recovered_nodes`]).
+    pub(super) recovered: Vec<N>,
+    /// What the last call left out ([`RapierLayout::skipped`]).
+    pub(super) skipped: Vec<LayoutError<N>>,
+}
+
+impl<N> Default for Report<N> {
+    fn default() -> Self {
+        Self {
+            recovered: Vec::new(),
+            skipped: Vec::new(),
+        }
+    }
+}
+
 impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// What the last call left out and why, in scene order (nodes, then edges, then the
     /// nodes' forces), as [`RapierLayout::try_step`] would have named each: nodes with a
@@ -49,7 +68,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// ));
     /// ```
     pub fn skipped(&self) -> &[LayoutError<N>] {
-        &self.skipped
+        &self.report.skipped
     }
 
     /// Every problem in `scene` and `extras` at once, in the order
@@ -78,9 +97,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             + self.matching.topology_problems
             + self.forces.targets.problems;
         if counted > 0 || (scene.nodes.is_empty() && !scene.edges.is_empty()) {
-            self.skipped = problems(scene, extras);
+            self.report.skipped = problems(scene, extras);
         } else {
-            self.skipped.clear();
+            self.report.skipped.clear();
         }
     }
 }

@@ -31,7 +31,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         );
         plan.substeps = plan.substeps.saturating_mul(substeps);
         plan.substep_dt /= substeps as f32;
-        self.joint_dt = fixed_timestep(state.dt) / substeps as f32;
+        self.built.joint_dt = fixed_timestep(state.dt) / substeps as f32;
         plan
     }
 
@@ -90,7 +90,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         };
         for k in 0..plan.substeps {
             crate::parallel::with_pool_awake(awake, || {
-                drive_kinematic_bodies(world, &self.drives, k, plan.substeps);
+                drive_kinematic_bodies(world, &self.host.drives, k, plan.substeps);
                 if forces_on {
                     let law = HeatLaw {
                         alpha: heat.scale,
@@ -100,7 +100,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                     self.forces
                         .apply(world, config, law, heat.contact_softness, plan.substep_dt);
                 }
-                if stale_ccd_in(world, &self.drives) {
+                if stale_ccd_in(world, &self.host.drives) {
                     world.skip_ccd_next_step();
                 }
                 let watch = Stopwatch::start(&self.forces.profile);
@@ -116,9 +116,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
 
     /// Takes the nodes rapier quarantined during this call's steps.
     pub(super) fn collect_recovered(&mut self) {
-        self.recovered.clear();
+        self.report.recovered.clear();
         if let Some(world) = self.world.as_mut() {
-            self.recovered.extend(world.take_recovered_nodes());
+            self.report.recovered.extend(world.take_recovered_nodes());
         }
     }
 }

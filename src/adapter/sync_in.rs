@@ -42,7 +42,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         frame_dt: f32,
         known: Option<&[usize]>,
     ) -> bool {
-        self.drives.clear();
+        self.host.drives.clear();
         let Some(world) = self.world.as_mut() else {
             return false;
         };
@@ -58,12 +58,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         }
         let mut pass = SyncPass {
             world,
-            drives: &mut self.drives,
+            drives: &mut self.host.drives,
             config: &self.config,
             frame_dt,
             sweeps: 0,
-            disturbances: &mut self.disturbances,
-            flights: &mut self.flights,
+            disturbances: &mut self.heat.spread,
+            flights: &mut self.host.flights,
             kept: self.forces.kept_bodies(),
         };
         let check_drags = !extras.dragging.is_empty();
@@ -103,14 +103,14 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// scene changed, yet bodies at rest may now be pushed. Returns whether either
     /// happened.
     pub(super) fn sync_gravity(&mut self, gravity: Vector2D<f32>, reconfigured: bool) -> bool {
-        let disturbed = reconfigured || gravity != self.gravity;
+        let disturbed = reconfigured || gravity != self.host.gravity;
         if disturbed {
-            self.disturbances.touch_everything();
+            self.heat.spread.touch_everything();
             if let Some(world) = self.world.as_mut() {
                 world.wake_dynamic_bodies();
             }
         }
-        self.gravity = gravity;
+        self.host.gravity = gravity;
         disturbed
     }
 }

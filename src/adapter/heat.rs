@@ -11,9 +11,9 @@ use super::rest::Rest;
 use super::RapierLayout;
 use crate::config::cooling::Cooling;
 use crate::config::ContactSoftness;
-
-#[cfg(doc)]
-use crate::RapierLayoutConfig;
+use crate::config::RapierLayoutConfig;
+use crate::simulate::Forces;
+use crate::world::RapierSceneWorld;
 
 /// How far the springs' scale may drift from the heat's before every spring is re-tuned
 /// (a fraction of the scale): each re-tune touches every joint, so the scale follows the
@@ -73,38 +73,45 @@ pub(super) struct FrameHeat {
     pub(super) contact_softness: ContactSoftness,
 }
 
-impl<N: Clone + Eq + Hash> RapierLayout<N> {
+impl HeatStage {
     /// Before the simulation: a disturbance during the first unfolding ends it, any
     /// disturbance lifts the cold stop and reheats a cooling layout. Returns whether the
     /// world is to be stepped (false while halted).
-    pub(super) fn start_frame(&mut self, disturbed: bool, unfolding_before: bool) -> bool {
+    pub(super) fn start_frame<N: Clone + Eq + Hash>(
+        &mut self,
+        config: &RapierLayoutConfig,
+        disturbed: bool,
+        unfolding_before: bool,
+        mut world: Option<&mut RapierSceneWorld<N>>,
+        forces: &mut Forces<N>,
+    ) -> bool {
         if disturbed && unfolding_before {
             // An interaction during the first unfolding: contacts in, and firm.
-            self.end_unfolding();
+            self.end_unfolding(world.as_deref_mut());
         }
         if disturbed {
-            self.heat.state.halted = false;
-            if self.heat.spread.everything() {
+            self.state.halted = false;
+            if self.spread.everything() {
                 // Laid out again as a whole: toward the stress minimum, not the rest.
-                self.forces.forget_rest();
+                forces.forget_rest();
             }
         }
-        if self.heat.state.halted {
+        if self.state.halted {
             return false;
         }
-        if let Some(cooling) = self.config.cooling {
+        if let Some(cooling) = config.cooling {
             if disturbed {
-                match (cooling.reheat_hops, self.world.as_mut()) {
-                    (Some(hops), Some(world)) if !self.heat.spread.everything() => {
+                match (cooling.reheat_hops, world) {
+                    (Some(hops), Some(world)) if !self.spread.everything() => {
                         // Only near what was touched.
                         let heat = cooling.reheated(0.0);
                         let coasting = cooling.coasting_heat();
-                        self.heat.spread.spread(world, hops, heat, coasting);
-                        self.heat.state.hottest = self.heat.state.hottest.max(heat);
+                        self.spread.spread(world, hops, heat, coasting);
+                        self.state.hottest = self.state.hottest.max(heat);
                     }
                     (_, world) => {
-                        self.heat.state.alpha = cooling.reheated(self.heat.state.alpha);
-                        self.forces.forget_rest();
+                        self.state.alpha = cooling.reheated(self.state.alpha);
+                        forces.forget_rest();
                         // All of it: springs applied as forces and the layout's own
                         // disk separation link no rapier island that would wake it.
                         if let Some(world) = world {
@@ -114,53 +121,30 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 }
                 // Also when the reheat cannot lift the heat off its floor: a disturbed
                 // layout gets half a second before it is stopped again.
-                self.heat.state.cold_time = 0.0;
+                self.state.cold_time = 0.0;
             }
         }
         true
     }
 
-    /// Heats the whole layout to at least `alpha`, clamped to the schedule's floor and to
-    /// 1, and wakes every body, as d3-force's `simulation.alpha(a).restart()`: the next
-    /// calls lay the graph out again from where it is, the way a "relayout" button
-    /// wants, whatever [`Cooling::reheat_hops`](crate::config::Cooling::reheat_hops) says.
-    /// Without a cooling schedule only wakes the bodies.
-    ///
-    /// # Example
-    /// ```
-    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasEdge, CanvasNode,
-    ///     CanvasSceneInput, Layout, LayoutExtras, RapierLayout, RapierLayoutConfig,
-    ///     RapierLayoutState};
-    /// let mut scene = CanvasSceneInput::new(
-    ///     vec![CanvasNode::new(1_u32, Point2D::origin()), CanvasNode::new(2, Point2D::new(300.0, 0.0))],
-    ///     vec![CanvasEdge::new(1, 2)],
-    /// );
-    /// let mut layout = RapierLayout::new(RapierLayoutConfig::force_directed());
-    /// let (mut state, extras) = (RapierLayoutState::default(), LayoutExtras::default());
-    /// let mut frame = |layout: &mut RapierLayout<u32>, scene: &mut CanvasSceneInput<u32>| {
-    ///     let deltas = layout.step(scene, &mut state, 1.0 / 60.0, &Default::default(), &extras);
-    ///     scene.apply_deltas(&deltas);
-    ///     deltas
-    /// };
-    /// while !layout.is_converged(&RapierLayoutState::default()) {
-    ///     frame(&mut layout, &mut scene);
-    /// }
-    /// assert!(frame(&mut layout, &mut scene).is_empty(), "at rest");
-    /// layout.reheat(1.0);
-    /// assert_eq!(layout.heat(), Some(1.0));
-    /// assert!(!layout.is_converged(&RapierLayoutState::default()));
-    /// ```
-    pub fn reheat(&mut self, alpha: f32) {
-        if let Some(cooling) = self.config.cooling {
+    /// [`RapierLayout::reheat`].
+    fn reheat<N: Clone + Eq + Hash>(
+        &mut self,
+        config: &RapierLayoutConfig,
+        alpha: f32,
+        world: Option<&mut RapierSceneWorld<N>>,
+        forces: &mut Forces<N>,
+    ) {
+        if let Some(cooling) = config.cooling {
             let alpha = if alpha.is_finite() { alpha } else { 1.0 };
-            self.heat.state.alpha = self.heat.state.alpha.max(alpha.clamp(cooling.floor(), 1.0));
-            self.heat.state.cold_time = 0.0;
+            self.state.alpha = self.state.alpha.max(alpha.clamp(cooling.floor(), 1.0));
+            self.state.cold_time = 0.0;
         }
-        self.heat.state.halted = false;
-        self.forces.forget_rest();
-        self.heat.rest.converged = false;
-        self.heat.rest.calm_time = 0.0;
-        if let Some(world) = self.world.as_mut() {
+        self.state.halted = false;
+        forces.forget_rest();
+        self.rest.converged = false;
+        self.rest.calm_time = 0.0;
+        if let Some(world) = world {
             world.wake_dynamic_bodies();
         }
     }
@@ -170,11 +154,14 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// rest lengths lets them fade toward the heat itself, blended by its median stretch),
     /// and during the first unfolding contacts softened by the heat and let in once it
     /// has fallen to [`Cooling::first_contact_heat`](crate::config::Cooling::first_contact_heat).
-    pub(super) fn heat_world(&mut self) -> FrameHeat {
-        let config = &self.config;
-        let heat = self.heat.state;
+    pub(super) fn heat_world<N: Clone + Eq + Hash>(
+        &self,
+        config: &RapierLayoutConfig,
+        world: Option<&mut RapierSceneWorld<N>>,
+    ) -> FrameHeat {
+        let heat = self.state;
         let mut contact_softness = config.contacts.softness;
-        let Some(world) = self.world.as_mut() else {
+        let Some(world) = world else {
             return FrameHeat {
                 scale: 1.0,
                 contact_softness,
@@ -216,33 +203,53 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     }
 
     /// After the simulation: the heat falls by the simulated time, the cold stop may
-    /// halt the world, and the first unfolding ends at the floor (at once without a
-    /// schedule).
-    pub(super) fn cool(&mut self, simulated: f32) {
-        match self.config.cooling {
+    /// halt the world (not while a thrown node is `in_flight`), and the first unfolding
+    /// ends at the floor (at once without a schedule).
+    pub(super) fn cool<N: Clone + Eq + Hash>(
+        &mut self,
+        config: &RapierLayoutConfig,
+        simulated: f32,
+        mut world: Option<&mut RapierSceneWorld<N>>,
+        forces: &mut Forces<N>,
+        in_flight: bool,
+    ) {
+        match config.cooling {
             Some(cooling) => {
-                self.heat.state.alpha = cooling.cooled(self.heat.state.alpha, simulated);
-                self.cool_nodes(cooling, simulated);
-                self.stop_when_cold(cooling.floor(), simulated);
-                if self.heat.state.alpha <= cooling.floor() {
-                    self.end_unfolding();
+                self.state.alpha = cooling.cooled(self.state.alpha, simulated);
+                self.cool_nodes(cooling, simulated, world.as_deref_mut());
+                let floor = cooling.floor();
+                self.stop_when_cold(
+                    config,
+                    floor,
+                    simulated,
+                    world.as_deref_mut(),
+                    forces,
+                    in_flight,
+                );
+                if self.state.alpha <= floor {
+                    self.end_unfolding(world);
                 }
             }
             None => {
-                self.end_unfolding();
+                self.end_unfolding(world);
             }
         }
     }
 
     /// Cools every node heated by a local disturbance by `simulated` seconds of the
     /// schedule; a node as cold as the layout takes the layout's heat again.
-    fn cool_nodes(&mut self, cooling: Cooling, simulated: f32) {
-        if self.heat.state.hottest <= 0.0 {
+    fn cool_nodes<N: Clone + Eq + Hash>(
+        &mut self,
+        cooling: Cooling,
+        simulated: f32,
+        world: Option<&mut RapierSceneWorld<N>>,
+    ) {
+        if self.state.hottest <= 0.0 {
             return;
         }
-        let alpha = self.heat.state.alpha;
+        let alpha = self.state.alpha;
         let mut hottest = 0.0_f32;
-        if let Some(world) = self.world.as_mut() {
+        if let Some(world) = world {
             for s in 0..world.slot_count() {
                 let host = world.host_at_mut(s);
                 if host.heat > 0.0 {
@@ -252,22 +259,62 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 }
             }
         }
-        self.heat.state.hottest = hottest;
+        self.state.hottest = hottest;
     }
 
     /// Ends the first unfolding: contacts in (if they were left out) and firm from here
     /// on, so interactions always push. Returns whether contacts were let in.
-    pub(super) fn end_unfolding(&mut self) -> bool {
-        if !self.heat.state.unfolding {
+    pub(super) fn end_unfolding<N: Clone + Eq + Hash>(
+        &mut self,
+        world: Option<&mut RapierSceneWorld<N>>,
+    ) -> bool {
+        if !self.state.unfolding {
             return false;
         }
-        self.heat.state.unfolding = false;
-        match self.world.as_mut() {
+        self.state.unfolding = false;
+        match world {
             Some(world) if !world.contacts_enabled() => {
                 world.set_contacts_enabled(true);
                 true
             }
             _ => false,
         }
+    }
+}
+
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    /// Heats the whole layout to at least `alpha`, clamped to the schedule's floor and to
+    /// 1, and wakes every body, as d3-force's `simulation.alpha(a).restart()`: the next
+    /// calls lay the graph out again from where it is, the way a "relayout" button
+    /// wants, whatever [`Cooling::reheat_hops`](crate::config::Cooling::reheat_hops) says.
+    /// Without a cooling schedule only wakes the bodies.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::{euclid::default::Point2D, CanvasEdge, CanvasNode,
+    ///     CanvasSceneInput, Layout, LayoutExtras, RapierLayout, RapierLayoutConfig,
+    ///     RapierLayoutState};
+    /// let mut scene = CanvasSceneInput::new(
+    ///     vec![CanvasNode::new(1_u32, Point2D::origin()), CanvasNode::new(2, Point2D::new(300.0, 0.0))],
+    ///     vec![CanvasEdge::new(1, 2)],
+    /// );
+    /// let mut layout = RapierLayout::new(RapierLayoutConfig::force_directed());
+    /// let (mut state, extras) = (RapierLayoutState::default(), LayoutExtras::default());
+    /// let mut frame = |layout: &mut RapierLayout<u32>, scene: &mut CanvasSceneInput<u32>| {
+    ///     let deltas = layout.step(scene, &mut state, 1.0 / 60.0, &Default::default(), &extras);
+    ///     scene.apply_deltas(&deltas);
+    ///     deltas
+    /// };
+    /// while !layout.is_converged(&RapierLayoutState::default()) {
+    ///     frame(&mut layout, &mut scene);
+    /// }
+    /// assert!(frame(&mut layout, &mut scene).is_empty(), "at rest");
+    /// layout.reheat(1.0);
+    /// assert_eq!(layout.heat(), Some(1.0));
+    /// assert!(!layout.is_converged(&RapierLayoutState::default()));
+    /// ```
+    pub fn reheat(&mut self, alpha: f32) {
+        self.heat
+            .reheat(&self.config, alpha, self.world.as_mut(), &mut self.forces);
     }
 }

@@ -56,9 +56,10 @@ use built::Built;
 use drag::Host;
 use heat::HeatStage;
 use matching::Matching;
-use skipped::Report;
 pub use resume::LayoutSnapshot;
+use skipped::Report;
 pub use state::RapierLayoutState;
+use substeps::{plan_frame, Substeps};
 
 /// A graph layout on a persistent Rapier2D world.
 ///
@@ -483,16 +484,20 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.note_skipped(scene, extras);
             return DeltaMap::default();
         }
-        let plan = self.plan_frame(state, dt);
+        // 1. Plan.
+        let (plan, joint_dt) = plan_frame(&self.config, state, dt);
+        self.built.joint_dt = joint_dt;
         self.heat.spread.clear();
+        // 2. Reconfigure.
         let reconfigured = self.apply_config_changes();
         let unfolding_before = self.heat.state.unfolding;
         let cold = self.builds_cold();
-        // A caller's list stands for the matching only while nothing was reconfigured.
+        // 3. Match and edit. A caller's list stands for the matching only while nothing
+        // was reconfigured.
         let known =
             known.filter(|changed| !reconfigured && self.rematch_known(scene, extras, changed));
         let mut disturbed = known.is_none() && self.sync_topology(scene, extras);
-        // NOTE: every drive comes with a disturbance from `sync_in`.
+        // 4. Sync in. NOTE: every drive comes with a disturbance from `sync_in`.
         disturbed |= self.sync_in(scene, extras, plan.frame_dt, known);
         disturbed |= self.sync_node_forces(scene, extras);
         if cold {
@@ -505,20 +510,48 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             finite_or(state.gravity_y, 0.0),
         );
         disturbed |= self.sync_gravity(gravity, reconfigured);
-        if !self.start_frame(disturbed, unfolding_before) {
+        // 5. Heat.
+        let (world, forces) = (self.world.as_mut(), &mut self.forces);
+        if !self
+            .heat
+            .start_frame(&self.config, disturbed, unfolding_before, world, forces)
+        {
             return self.halted_frame(state, &plan);
         }
         let awake_before = self
             .world
             .as_ref()
             .map_or(0, RapierSceneWorld::awake_body_count);
-        self.simulate(&plan, gravity);
+        // 6. Simulate.
+        if let Some(world) = self.world.as_mut() {
+            let heat = self.heat.heat_world(&self.config, Some(&mut *world));
+            let substeps = Substeps {
+                config: &self.config,
+                world,
+                forces: &mut self.forces,
+                drives: &self.host.drives,
+                pool_awake: self.pool_awake,
+            };
+            substeps.run(&plan, gravity, heat);
+        }
         self.land_flights();
         self.collect_recovered();
         state.simulated_time += f64::from(plan.simulated());
-        self.cool(plan.simulated());
+        let in_flight = !self.host.flights.is_empty();
+        let (world, forces) = (self.world.as_mut(), &mut self.forces);
+        let simulated = plan.simulated();
+        self.heat
+            .cool(&self.config, simulated, world, forces, in_flight);
+        // 7. Sync out.
         let report = self.sync_out(scene, awake_before);
-        self.track_rest(disturbed, &report, plan.simulated());
+        // 8. Rest.
+        self.heat.track_rest(
+            &self.config,
+            disturbed,
+            &report,
+            simulated,
+            self.world.as_mut(),
+        );
         report.deltas
     }
 }

@@ -305,7 +305,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         };
         // The picture is the rest's balance (`stress/rest_bias.rs`), measured with the
         // springs at the floor's scale, as the first step will have them.
-        self.heat_world();
+        self.heat.heat_world(&self.config, self.world.as_mut());
         if let Some(world) = self.world.as_mut() {
             let dt = world.integration_parameters().dt;
             self.forces

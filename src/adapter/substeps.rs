@@ -7,60 +7,79 @@ use std::hash::Hash;
 
 use euclid::default::Vector2D;
 
-use super::drag::{drive_kinematic_bodies, stale_ccd_in};
+use super::drag::{drive_kinematic_bodies, stale_ccd_in, Drive};
+use super::heat::FrameHeat;
 use super::node_forces::hold_locked_axes;
 use super::state::RapierLayoutState;
 use super::RapierLayout;
 use crate::config::cooling::HeatLaw;
-use crate::config::SolverSettings;
+use crate::config::{RapierLayoutConfig, SolverSettings};
 use crate::profile::Stopwatch;
 use crate::sanitize::positive_or;
+use crate::simulate::Forces;
 use crate::timestep::{fixed_timestep, StepPlan};
+use crate::world::RapierSceneWorld;
 
-impl<N: Clone + Eq + Hash> RapierLayout<N> {
-    /// The substeps of a call of frame time `dt`. Accuracy presets split every step
-    /// further; an unusable `dt` is still one whole fixed step. New joints are tuned for
-    /// the longest substep this configuration takes.
-    pub(super) fn plan_frame(&mut self, state: &RapierLayoutState, dt: f32) -> StepPlan {
-        let substeps = self.solver_settings().substeps;
-        let mut plan = StepPlan::new(
-            dt,
-            state.dt,
-            self.config.frame.max_frame_time,
-            self.config.frame.max_substeps,
-        );
-        plan.substeps = plan.substeps.saturating_mul(substeps);
-        plan.substep_dt /= substeps as f32;
-        self.built.joint_dt = fixed_timestep(state.dt) / substeps as f32;
-        plan
-    }
+/// The substeps of a call of frame time `dt`, and the timestep new joints are tuned
+/// for. Accuracy presets split every step further; an unusable `dt` is still one whole
+/// fixed step. New joints are tuned for the longest substep this configuration takes.
+pub(super) fn plan_frame(
+    config: &RapierLayoutConfig,
+    state: &RapierLayoutState,
+    dt: f32,
+) -> (StepPlan, f32) {
+    let substeps = solver_settings(config).substeps;
+    let mut plan = StepPlan::new(
+        dt,
+        state.dt,
+        config.frame.max_frame_time,
+        config.frame.max_substeps,
+    );
+    plan.substeps = plan.substeps.saturating_mul(substeps);
+    plan.substep_dt /= substeps as f32;
+    (plan, fixed_timestep(state.dt) / substeps as f32)
+}
 
-    /// What this call asks of rapier's solver. With the layout's own disk separation,
-    /// rapier's solver iterations become substeps of the layout's, so that contacts
-    /// (and the other forces) are worked out anew for each.
-    fn solver_settings(&self) -> SolverSettings {
-        let settings = self.config.solver.accuracy.solver_settings();
-        if self.config.contacts.separates_disks() {
-            SolverSettings {
-                solver_iterations: 1,
-                substeps: settings
-                    .substeps
-                    .saturating_mul(settings.solver_iterations as u32),
-                ..settings
-            }
-        } else {
-            settings
+/// What this call asks of rapier's solver. With the layout's own disk separation,
+/// rapier's solver iterations become substeps of the layout's, so that contacts (and
+/// the other forces) are worked out anew for each.
+fn solver_settings(config: &RapierLayoutConfig) -> SolverSettings {
+    let settings = config.solver.accuracy.solver_settings();
+    if config.contacts.separates_disks() {
+        SolverSettings {
+            solver_iterations: 1,
+            substeps: settings
+                .substeps
+                .saturating_mul(settings.solver_iterations as u32),
+            ..settings
         }
+    } else {
+        settings
     }
+}
 
-    /// Runs the call's substeps under `gravity`.
-    pub(super) fn simulate(&mut self, plan: &StepPlan, gravity: Vector2D<f32>) {
-        let heat = self.heat_world();
-        let solver = self.solver_settings();
-        let config = &self.config;
-        let Some(world) = self.world.as_mut() else {
-            return;
-        };
+/// What the simulation of one call borrows.
+pub(super) struct Substeps<'a, N> {
+    pub(super) config: &'a RapierLayoutConfig,
+    pub(super) world: &'a mut RapierSceneWorld<N>,
+    pub(super) forces: &'a mut Forces<N>,
+    /// Kinematic bodies moving to the host's positions over the substeps.
+    pub(super) drives: &'a [Drive],
+    /// [`RapierLayout::set_pool_awake`].
+    pub(super) pool_awake: bool,
+}
+
+impl<N: Clone + Eq + Hash> Substeps<'_, N> {
+    /// Runs the call's substeps under `gravity`, at the call's `heat`.
+    pub(super) fn run(self, plan: &StepPlan, gravity: Vector2D<f32>, heat: FrameHeat) {
+        let Self {
+            config,
+            world,
+            forces,
+            drives,
+            pool_awake,
+        } = self;
+        let solver = solver_settings(config);
         let length_unit = positive_or(config.solver.length_unit, 1.0);
         let params = world.integration_parameters_mut();
         params.dt = plan.substep_dt;
@@ -74,46 +93,47 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         params.num_internal_pgs_iterations = solver.internal_pgs_iterations;
         params.contact_softness = heat.contact_softness.coefficients();
         params.static_contact_softness = heat.contact_softness.static_coefficients();
-        let forces_on = self.forces.any_active(config);
+        let forces_on = forces.any_active(config);
         if !forces_on {
-            self.forces.release(world);
+            forces.release(world);
         }
-        if let Some(profile) = self.forces.profile.as_mut() {
+        if let Some(profile) = forces.profile.as_mut() {
             profile.substeps += u64::from(plan.substeps);
         }
         // Under `parallel`, another thread of the pool waits for each substep's parts
         // awake (`parallel/awake.rs`; `RapierLayout::set_pool_awake`).
-        let awake = if self.pool_awake {
+        let awake = if pool_awake {
             world.awake_body_count()
         } else {
             0
         };
         for k in 0..plan.substeps {
             crate::parallel::with_pool_awake(awake, || {
-                drive_kinematic_bodies(world, &self.host.drives, k, plan.substeps);
+                drive_kinematic_bodies(world, drives, k, plan.substeps);
                 if forces_on {
                     let law = HeatLaw {
                         alpha: heat.scale,
                         cooling: config.cooling,
                         blend: world.spring_blend(),
                     };
-                    self.forces
-                        .apply(world, config, law, heat.contact_softness, plan.substep_dt);
+                    forces.apply(world, config, law, heat.contact_softness, plan.substep_dt);
                 }
-                if stale_ccd_in(world, &self.host.drives) {
+                if stale_ccd_in(world, drives) {
                     world.skip_ccd_next_step();
                 }
-                let watch = Stopwatch::start(&self.forces.profile);
+                let watch = Stopwatch::start(&forces.profile);
                 world.step(gravity);
-                watch.stop(&mut self.forces.profile, |p| &mut p.rapier);
-                self.forces.settle(world, plan.substep_dt);
-                if !self.forces.targets.locks.is_empty() {
-                    hold_locked_axes(world, &self.forces.targets.locks);
+                watch.stop(&mut forces.profile, |p| &mut p.rapier);
+                forces.settle(world, plan.substep_dt);
+                if !forces.targets.locks.is_empty() {
+                    hold_locked_axes(world, &forces.targets.locks);
                 }
             });
         }
     }
+}
 
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// Takes the nodes rapier quarantined during this call's steps.
     pub(super) fn collect_recovered(&mut self) {
         self.report.recovered.clear();

@@ -9,7 +9,7 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::Vector;
 
-use super::RapierLayout;
+use crate::config::RapierLayoutConfig;
 use crate::sanitize::finite_or;
 use crate::world::slot::HostSync;
 use crate::world::RapierSceneWorld;
@@ -168,20 +168,24 @@ impl<N> Default for Host<N> {
     }
 }
 
-impl<N: Clone + Eq + Hash> RapierLayout<N> {
+impl<N: Clone + Eq + Hash> Host<N> {
     /// Lands the thrown nodes that turned back, slowed, were grabbed or left (they take
     /// the material's damping again), and forgets those that rest.
-    pub(super) fn land_flights(&mut self) {
-        if self.host.flights.is_empty() {
+    pub(super) fn land_flights(
+        &mut self,
+        config: &RapierLayoutConfig,
+        world: Option<&mut RapierSceneWorld<N>>,
+    ) {
+        if self.flights.is_empty() {
             return;
         }
-        let damping = finite_or(self.config.material.linear_damping, 0.0).max(0.0);
-        let rest_speed = self.config.rest.speed;
-        let Some(world) = self.world.as_mut() else {
-            self.host.flights.clear();
+        let damping = finite_or(config.material.linear_damping, 0.0).max(0.0);
+        let rest_speed = config.rest.speed;
+        let Some(world) = world else {
+            self.flights.clear();
             return;
         };
-        self.host.flights.retain_mut(|flight| {
+        self.flights.retain_mut(|flight| {
             let Some(s) = world.slot_of(&flight.id) else {
                 return false;
             };

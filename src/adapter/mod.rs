@@ -60,6 +60,8 @@ pub use resume::LayoutSnapshot;
 use skipped::Report;
 pub use state::RapierLayoutState;
 use substeps::{plan_frame, Substeps};
+use sync_in::HostInput;
+use sync_out::sync_out;
 
 /// A graph layout on a persistent Rapier2D world.
 ///
@@ -498,7 +500,18 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             known.filter(|changed| !reconfigured && self.rematch_known(scene, extras, changed));
         let mut disturbed = known.is_none() && self.sync_topology(scene, extras);
         // 4. Sync in. NOTE: every drive comes with a disturbance from `sync_in`.
-        disturbed |= self.sync_in(scene, extras, plan.frame_dt, known);
+        let input = HostInput {
+            config: &self.config,
+            scene,
+            extras,
+            frame_dt: plan.frame_dt,
+            known,
+        };
+        let kept = self.forces.kept_bodies();
+        let (world, spread) = (self.world.as_mut(), &mut self.heat.spread);
+        disturbed |= self
+            .host
+            .sync_in(&input, world, &self.matching, spread, kept);
         disturbed |= self.sync_node_forces(scene, extras);
         if cold {
             // NOTE: after the sync, which flips pinned bodies and reads the forces.
@@ -509,7 +522,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             finite_or(state.gravity_x, 0.0),
             finite_or(state.gravity_y, 0.0),
         );
-        disturbed |= self.sync_gravity(gravity, reconfigured);
+        let (world, spread) = (self.world.as_mut(), &mut self.heat.spread);
+        disturbed |= self.host.sync_gravity(gravity, reconfigured, world, spread);
         // 5. Heat.
         let (world, forces) = (self.world.as_mut(), &mut self.forces);
         if !self
@@ -534,8 +548,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             };
             substeps.run(&plan, gravity, heat);
         }
-        self.land_flights();
-        self.collect_recovered();
+        self.host.land_flights(&self.config, self.world.as_mut());
+        self.report.collect_recovered(self.world.as_mut());
         state.simulated_time += f64::from(plan.simulated());
         let in_flight = !self.host.flights.is_empty();
         let (world, forces) = (self.world.as_mut(), &mut self.forces);
@@ -543,7 +557,14 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.heat
             .cool(&self.config, simulated, world, forces, in_flight);
         // 7. Sync out.
-        let report = self.sync_out(scene, awake_before);
+        let report = sync_out(
+            scene,
+            awake_before,
+            &self.config.rest,
+            self.world.as_mut(),
+            &mut self.matching,
+            &mut self.forces,
+        );
         // 8. Rest.
         self.heat.track_rest(
             &self.config,

@@ -10,8 +10,8 @@ use euclid::default::Vector2D;
 use super::drag::{drive_kinematic_bodies, stale_ccd_in, Drive};
 use super::heat::FrameHeat;
 use super::node_forces::hold_locked_axes;
+use super::skipped::Report;
 use super::state::RapierLayoutState;
-use super::RapierLayout;
 use crate::config::cooling::HeatLaw;
 use crate::config::{RapierLayoutConfig, SolverSettings};
 use crate::profile::Stopwatch;
@@ -133,12 +133,12 @@ impl<N: Clone + Eq + Hash> Substeps<'_, N> {
     }
 }
 
-impl<N: Clone + Eq + Hash> RapierLayout<N> {
+impl<N: Clone + Eq + Hash> Report<N> {
     /// Takes the nodes rapier quarantined during this call's steps.
-    pub(super) fn collect_recovered(&mut self) {
-        self.report.recovered.clear();
-        if let Some(world) = self.world.as_mut() {
-            self.report.recovered.extend(world.take_recovered_nodes());
+    pub(super) fn collect_recovered(&mut self, world: Option<&mut RapierSceneWorld<N>>) {
+        self.recovered.clear();
+        if let Some(world) = world {
+            self.recovered.extend(world.take_recovered_nodes());
         }
     }
 }

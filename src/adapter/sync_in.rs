@@ -15,10 +15,9 @@ use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::{RigidBodyType, Vector};
 
 use super::disturbance::Disturbances;
-use super::drag::{release_velocity, track_drag, Drive, Flight};
+use super::drag::{release_velocity, track_drag, Drive, Flight, Host};
 use super::edits::{mass_of, shape_of};
-use super::matching::{NodeMatch, NO_SLOT};
-use super::RapierLayout;
+use super::matching::{Matching, NodeMatch, NO_SLOT};
 use crate::config::{BodyKindPolicy, RapierLayoutConfig};
 use crate::input::layout::LayoutExtras;
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
@@ -31,23 +30,44 @@ use crate::world::RapierSceneWorld;
 /// of one per move).
 const MAX_SWEEPS: usize = 16;
 
-impl<N: Clone + Eq + Hash> RapierLayout<N> {
+/// What the host hands the sync in on one call.
+pub(super) struct HostInput<'a, N> {
+    pub(super) config: &'a RapierLayoutConfig,
+    pub(super) scene: &'a CanvasSceneInput<N>,
+    pub(super) extras: &'a LayoutExtras<N>,
+    /// The call's frame time, for the pointer's speed.
+    pub(super) frame_dt: f32,
+    /// The scene nodes a caller listed as changed (`known.rs`), or `None` for all.
+    pub(super) known: Option<&'a [usize]>,
+}
+
+impl<N: Clone + Eq + Hash> Host<N> {
     /// Returns whether the host disturbed the layout (drag, release, host move, pin
-    /// change, radius edit). With `known` (`known.rs`), only the listed scene nodes are
-    /// synced, and the nodes the last call moved take the positions they were told.
+    /// change, radius edit), recording what it touched in `spread`. With `known`
+    /// (`known.rs`), only the listed scene nodes are synced, and the nodes the last call
+    /// moved take the positions they were told. `kept` is what the forces keep of every
+    /// body ([`Forces::kept_bodies`](crate::simulate::Forces::kept_bodies)).
     pub(super) fn sync_in(
         &mut self,
-        scene: &CanvasSceneInput<N>,
-        extras: &LayoutExtras<N>,
-        frame_dt: f32,
-        known: Option<&[usize]>,
+        input: &HostInput<'_, N>,
+        world: Option<&mut RapierSceneWorld<N>>,
+        matching: &Matching<N>,
+        spread: &mut Disturbances,
+        kept: Option<(&[Point2D<f32>], &[bool])>,
     ) -> bool {
-        self.host.drives.clear();
-        let Some(world) = self.world.as_mut() else {
+        let HostInput {
+            config,
+            scene,
+            extras,
+            frame_dt,
+            known,
+        } = *input;
+        self.drives.clear();
+        let Some(world) = world else {
             return false;
         };
         if known.is_some() {
-            for &s in self.matching.moved() {
+            for &s in matching.moved() {
                 // What the fast path below does for a free node the host moved by its
                 // delta: its anchor is where the host has it.
                 let (sync, anchor) = world.host_and_anchor_mut(s as usize);
@@ -58,16 +78,16 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         }
         let mut pass = SyncPass {
             world,
-            drives: &mut self.host.drives,
-            config: &self.config,
+            drives: &mut self.drives,
+            config,
             frame_dt,
             sweeps: 0,
-            disturbances: &mut self.heat.spread,
-            flights: &mut self.host.flights,
-            kept: self.forces.kept_bodies(),
+            disturbances: spread,
+            flights: &mut self.flights,
+            kept,
         };
         let check_drags = !extras.dragging.is_empty();
-        let matches = self.matching.matches();
+        let matches = matching.matches();
         let mut disturbed = false;
         let mut sync = |node: &CanvasNode<N>, m: NodeMatch| {
             if m.slot != NO_SLOT {
@@ -86,14 +106,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                     sync(&scene.nodes[i], matches[i]);
                 }
                 #[cfg(debug_assertions)]
-                super::known::check_unlisted(
-                    pass.world,
-                    &self.config,
-                    scene,
-                    extras,
-                    matches,
-                    listed,
-                );
+                super::known::check_unlisted(pass.world, config, scene, extras, matches, listed);
             }
         }
         disturbed
@@ -102,15 +115,21 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// A gravity change is a disturbance, and so is a new configuration: nothing in the
     /// scene changed, yet bodies at rest may now be pushed. Returns whether either
     /// happened.
-    pub(super) fn sync_gravity(&mut self, gravity: Vector2D<f32>, reconfigured: bool) -> bool {
-        let disturbed = reconfigured || gravity != self.host.gravity;
+    pub(super) fn sync_gravity(
+        &mut self,
+        gravity: Vector2D<f32>,
+        reconfigured: bool,
+        world: Option<&mut RapierSceneWorld<N>>,
+        spread: &mut Disturbances,
+    ) -> bool {
+        let disturbed = reconfigured || gravity != self.gravity;
         if disturbed {
-            self.heat.spread.touch_everything();
-            if let Some(world) = self.world.as_mut() {
+            spread.touch_everything();
+            if let Some(world) = world {
                 world.wake_dynamic_bodies();
             }
         }
-        self.host.gravity = gravity;
+        self.gravity = gravity;
         disturbed
     }
 }

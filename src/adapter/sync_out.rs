@@ -8,10 +8,11 @@ use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::Vector;
 
 use super::matching::{Matching, NO_SLOT};
-use super::RapierLayout;
+use crate::config::RestDetection;
 use crate::input::layout::{DeltaMap, IdHasher};
 use crate::input::scene::CanvasSceneInput;
 use crate::input::validation::{position_in_range, MAX_COORDINATE};
+use crate::simulate::Forces;
 use crate::world::RapierSceneWorld;
 
 /// What one call reports.
@@ -25,81 +26,83 @@ pub(super) struct FrameReport<N> {
     pub(super) awake: usize,
 }
 
-impl<N: Clone + Eq + Hash> RapierLayout<N> {
-    /// Reads the dynamic bodies that may have moved: those the world logged as changed,
-    /// or every body the scene names when it logged too many to say. `awake_before` is
-    /// rapier's count of simulated bodies before the step: when it was 0 and still is,
-    /// nothing moved and no body needs reading.
-    pub(super) fn sync_out(
-        &mut self,
-        scene: &CanvasSceneInput<N>,
-        awake_before: usize,
-    ) -> FrameReport<N> {
-        self.matching.moved_mut().clear();
-        let epsilon = self.config.rest.delta_epsilon.max(0.0);
-        let epsilon_sq = epsilon * epsilon;
-        // Allocated on the first delta: a resting layout returns an empty map for free.
-        let mut report = FrameReport {
-            deltas: DeltaMap::with_hasher(IdHasher::default()),
-            max_speed: 0.0,
-            awake: 0,
-        };
-        let Some(world) = self.world.as_mut() else {
-            return report;
-        };
-        if awake_before == 0 && world.awake_body_count() == 0 {
-            return report;
-        }
-        // The bodies that may have moved since the last call: those the world reports
-        // changed (a few dozen on a settled graph disturbed in one place), or all.
-        let moved = match world.changed_slots() {
-            Some(changed) => {
-                let mut slots = changed.to_vec();
-                slots.sort_unstable();
-                Moved::of(world, slots.iter().map(|&s| s as usize), epsilon_sq)
-            }
-            None => Moved::of(world, matched_slots(scene, &self.matching), epsilon_sq),
-        };
-        #[cfg(debug_assertions)]
-        if world.changed_slots().is_some() {
-            let every = Moved::of(world, matched_slots(scene, &self.matching), epsilon_sq);
-            moved.check_against(every);
-        }
-        report.awake = moved.awake;
-        let max_speed_sq = moved.max_speed_sq;
-        // Told positions the host's f32 addition does not land on the body's exactly are
-        // read again next call, when the world no longer reports them changed.
-        let mut inexact = Vec::new();
-        for &(s, mut delta) in &moved.deltas {
-            let s = s as usize;
-            if let Some(edge) = beyond_range(world.position_at(s)) {
-                // The range is the host's too: a node pushed past it (disks wider than
-                // the range apart) stops at its edge, where the host can hand it back.
-                let body = world.body_at_mut(s);
-                body.set_translation(Vector::new(edge.x, edge.y), true);
-                body.set_linvel(Vector::ZERO, true);
-                delta = edge - world.anchor_at(s);
-            }
-            let told = world.anchor_at(s) + delta;
-            // The host adds the delta with the same f32 addition.
-            world.host_at_mut(s).told = told;
-            if told != world.position_at(s) {
-                inexact.push(s);
-            }
-            if report.deltas.capacity() == 0 {
-                report.deltas.reserve(moved.deltas.len());
-            }
-            report.deltas.insert(world.id_at(s).clone(), delta);
-            self.matching.moved_mut().push(s as u32);
-        }
-        self.forces.catch_up(world);
-        world.forget_changes();
-        for s in inexact {
-            world.mark_changed(s);
-        }
-        report.max_speed = max_speed_sq.sqrt();
-        report
+/// Reads the dynamic bodies that may have moved: those the world logged as changed, or
+/// every body the scene names when it logged too many to say. `awake_before` is
+/// rapier's count of simulated bodies before the step: when it was 0 and still is,
+/// nothing moved and no body needs reading. Records the moved slots in `matching` and
+/// catches the forces' kept bodies up.
+pub(super) fn sync_out<N: Clone + Eq + Hash>(
+    scene: &CanvasSceneInput<N>,
+    awake_before: usize,
+    rest: &RestDetection,
+    world: Option<&mut RapierSceneWorld<N>>,
+    matching: &mut Matching<N>,
+    forces: &mut Forces<N>,
+) -> FrameReport<N> {
+    matching.moved_mut().clear();
+    let epsilon = rest.delta_epsilon.max(0.0);
+    let epsilon_sq = epsilon * epsilon;
+    // Allocated on the first delta: a resting layout returns an empty map for free.
+    let mut report = FrameReport {
+        deltas: DeltaMap::with_hasher(IdHasher::default()),
+        max_speed: 0.0,
+        awake: 0,
+    };
+    let Some(world) = world else {
+        return report;
+    };
+    if awake_before == 0 && world.awake_body_count() == 0 {
+        return report;
     }
+    // The bodies that may have moved since the last call: those the world reports
+    // changed (a few dozen on a settled graph disturbed in one place), or all.
+    let moved = match world.changed_slots() {
+        Some(changed) => {
+            let mut slots = changed.to_vec();
+            slots.sort_unstable();
+            Moved::of(world, slots.iter().map(|&s| s as usize), epsilon_sq)
+        }
+        None => Moved::of(world, matched_slots(scene, &matching), epsilon_sq),
+    };
+    #[cfg(debug_assertions)]
+    if world.changed_slots().is_some() {
+        let every = Moved::of(world, matched_slots(scene, &matching), epsilon_sq);
+        moved.check_against(every);
+    }
+    report.awake = moved.awake;
+    let max_speed_sq = moved.max_speed_sq;
+    // Told positions the host's f32 addition does not land on the body's exactly are
+    // read again next call, when the world no longer reports them changed.
+    let mut inexact = Vec::new();
+    for &(s, mut delta) in &moved.deltas {
+        let s = s as usize;
+        if let Some(edge) = beyond_range(world.position_at(s)) {
+            // The range is the host's too: a node pushed past it (disks wider than
+            // the range apart) stops at its edge, where the host can hand it back.
+            let body = world.body_at_mut(s);
+            body.set_translation(Vector::new(edge.x, edge.y), true);
+            body.set_linvel(Vector::ZERO, true);
+            delta = edge - world.anchor_at(s);
+        }
+        let told = world.anchor_at(s) + delta;
+        // The host adds the delta with the same f32 addition.
+        world.host_at_mut(s).told = told;
+        if told != world.position_at(s) {
+            inexact.push(s);
+        }
+        if report.deltas.capacity() == 0 {
+            report.deltas.reserve(moved.deltas.len());
+        }
+        report.deltas.insert(world.id_at(s).clone(), delta);
+        matching.moved_mut().push(s as u32);
+    }
+    forces.catch_up(world);
+    world.forget_changes();
+    for s in inexact {
+        world.mark_changed(s);
+    }
+    report.max_speed = max_speed_sq.sqrt();
+    report
 }
 
 /// The nearest point within ±[`MAX_COORDINATE`] of a position beyond it (`None` within).

@@ -1,24 +1,35 @@
 //! The adapter: [`RapierLayout`], which keeps one [`RapierSceneWorld`] alive across
 //! frames and syncs the host's scene into it and the motion out of it.
 //!
-//! One call runs through these stages, each in a file of its own:
+//! The layout's state is split by stage, and each stage borrows only what it touches
+//! (the way rapier's pipeline passes its sets): [`Built`](built::Built) (what the world
+//! was built from), `Matching` (scene nodes to bodies), `Host` (drives, throws,
+//! gravity), [`HeatStage`](heat::HeatStage) (heat, local spread, rest), `Forces`
+//! (`simulate/`: the force registry, the disk separation, the rest balance) and
+//! `Report` (recovered and skipped). One call, `advance`, runs these stages in order,
+//! each in a file or folder of its own:
 //! 1. **Plan** (`substeps.rs`): the frame time becomes equal substeps.
 //! 2. **Reconfigure** (`reconfigure.rs`): a changed configuration drops the world or
 //!    replaces its joints.
-//! 3. **Match and edit** (`matching.rs`, `edits.rs`): scene nodes are matched to bodies;
-//!    when nodes, edges or pins changed, the world is patched (or rebuilt).
+//! 3. **Match and edit** (`matching.rs`, `known.rs`, `edits.rs`, `seating.rs`): scene
+//!    nodes are matched to bodies; when nodes, edges or pins changed, the world is
+//!    patched (or rebuilt, under `stress()` from the stress model's start:
+//!    `stress/placement.rs`).
 //! 4. **Sync in** (`sync_in.rs`, `drag.rs`): body kinds follow pins, drags and unusable
 //!    input, flipped in place; pinned and dragged bodies are driven to the host's
 //!    positions; a release throws the node with the pointer's speed; free bodies the
 //!    host moved are put where the host put them.
 //!    Then the host's per-node forces (`node_forces.rs`): the table the pulls read,
-//!    wakes for changed ones, axis locks.
-//! 5. **Heat** (`heat.rs`): a disturbance reheats a cooling layout; a halted one stays
-//!    halted until disturbed.
-//! 6. **Simulate** (`substeps.rs`): per substep, kinematic drives, the body forces of
-//!    `forces/`, one rapier step, the locked axes held.
+//!    wakes for changed ones, axis locks; and gravity.
+//! 5. **Heat** (`heat/`): a disturbance reheats a cooling layout, all of it or near the
+//!    disturbance only (`heat/spread.rs`); a halted one stays halted until disturbed.
+//! 6. **Simulate** (`substeps.rs`, then `simulate/`): per substep, kinematic drives,
+//!    the forces of the registry, one rapier step, the disk separation, the locked axes
+//!    held. Then the heat cools and may stop the layout (`heat/rest.rs`).
 //! 7. **Sync out** (`sync_out.rs`): each free node's displacement during this call.
-//! 8. **Rest** (`rest.rs`): the cold stop and the convergence signal.
+//! 8. **Rest** (`heat/rest.rs`): the convergence signal.
+//!
+//! Snapshots are `resume.rs`; what a call left out, `skipped.rs`.
 
 use std::hash::Hash;
 
@@ -35,7 +46,6 @@ use crate::world::events::SceneEvent;
 use crate::world::RapierSceneWorld;
 
 mod built;
-mod disturbance;
 mod drag;
 mod edits;
 mod heat;
@@ -43,7 +53,6 @@ mod known;
 mod matching;
 mod node_forces;
 mod reconfigure;
-mod rest;
 mod resume;
 mod seating;
 mod skipped;

@@ -5,7 +5,7 @@
 
 use std::hash::Hash;
 
-use super::rest::Rest;
+use super::heat::Rest;
 use super::RapierLayout;
 #[cfg(doc)]
 use crate::config::RapierLayoutConfig;

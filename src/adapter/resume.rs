@@ -10,9 +10,9 @@ use serde::{Deserialize, Serialize};
 
 use super::built::Built;
 use super::drag::{Flight, Host};
+use super::heat::Rest;
 use super::heat::{Heat, HeatStage};
 use super::matching::Matching;
-use super::rest::Rest;
 use super::RapierLayout;
 use crate::config::RapierLayoutConfig;
 use crate::config::REST_TIME;

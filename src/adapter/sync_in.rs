@@ -14,9 +14,9 @@ use std::hash::Hash;
 use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::{RigidBodyType, Vector};
 
-use super::disturbance::Disturbances;
 use super::drag::{release_velocity, track_drag, Drive, Flight, Host};
 use super::edits::{mass_of, shape_of};
+use super::heat::Disturbances;
 use super::matching::{Matching, NodeMatch, NO_SLOT};
 use crate::config::{BodyKindPolicy, RapierLayoutConfig};
 use crate::input::layout::LayoutExtras;

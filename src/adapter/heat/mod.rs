@@ -1,13 +1,21 @@
-//! The heat of a cooling layout ([`RapierLayoutConfig::cooling`]): a disturbance
-//! reheats it, simulated time cools it, and while it is hot its springs are re-tuned and
-//! (on the first unfolding) its contacts softened or left out. The cold stop at the end
-//! of the schedule is in `rest.rs`; the schedule itself is
-//! [`Cooling`](crate::config::Cooling).
+//! The heat stage ([`HeatStage`]), whole: the heat of a cooling layout
+//! ([`RapierLayoutConfig::cooling`]), which a disturbance reheats and simulated time
+//! cools, and while it is hot its springs re-tuned and (on the first unfolding) its
+//! contacts softened or left out (here); the heat a local disturbance spreads to the
+//! nodes near it (`spread.rs`); the cold stop at the end of the schedule and the
+//! convergence signal (`rest.rs`). The schedule's settings and laws (how the heat
+//! falls, what it scales, a heated node's forces: `HeatLaw`) are
+//! [`Cooling`](crate::config::Cooling)'s, in `config/cooling.rs`; each node's own heat
+//! is kept on its world slot, so that it moves with the body.
+
+mod rest;
+mod spread;
+
+pub(super) use rest::Rest;
+pub(super) use spread::Disturbances;
 
 use std::hash::Hash;
 
-use super::disturbance::Disturbances;
-use super::rest::Rest;
 use super::RapierLayout;
 use crate::config::cooling::Cooling;
 use crate::config::ContactSoftness;
@@ -55,29 +63,29 @@ impl Default for Heat {
 /// The heat stage's state: a cooling layout's heat, what this call disturbed (for a
 /// local reheat), and the convergence signal.
 #[derive(Debug, Default)]
-pub(super) struct HeatStage {
+pub(in crate::adapter) struct HeatStage {
     /// The heat and where it is in its schedule.
-    pub(super) state: Heat,
+    pub(in crate::adapter) state: Heat,
     /// The convergence signal (`rest.rs`).
-    pub(super) rest: Rest,
+    pub(in crate::adapter) rest: Rest,
     /// What this call disturbed, and the spread of its heat (`disturbance.rs`).
-    pub(super) spread: Disturbances,
+    pub(in crate::adapter) spread: Disturbances,
 }
 
 /// What the heat makes of one call's simulation.
 #[derive(Clone, Copy, Debug)]
-pub(super) struct FrameHeat {
+pub(in crate::adapter) struct FrameHeat {
     /// The factor on the body forces (1 without a schedule).
-    pub(super) scale: f32,
+    pub(in crate::adapter) scale: f32,
     /// The contacts of this call.
-    pub(super) contact_softness: ContactSoftness,
+    pub(in crate::adapter) contact_softness: ContactSoftness,
 }
 
 impl HeatStage {
     /// Before the simulation: a disturbance during the first unfolding ends it, any
     /// disturbance lifts the cold stop and reheats a cooling layout. Returns whether the
     /// world is to be stepped (false while halted).
-    pub(super) fn start_frame<N: Clone + Eq + Hash>(
+    pub(in crate::adapter) fn start_frame<N: Clone + Eq + Hash>(
         &mut self,
         config: &RapierLayoutConfig,
         disturbed: bool,
@@ -154,7 +162,7 @@ impl HeatStage {
     /// rest lengths lets them fade toward the heat itself, blended by its median stretch),
     /// and during the first unfolding contacts softened by the heat and let in once it
     /// has fallen to [`Cooling::first_contact_heat`](crate::config::Cooling::first_contact_heat).
-    pub(super) fn heat_world<N: Clone + Eq + Hash>(
+    pub(in crate::adapter) fn heat_world<N: Clone + Eq + Hash>(
         &self,
         config: &RapierLayoutConfig,
         world: Option<&mut RapierSceneWorld<N>>,
@@ -205,7 +213,7 @@ impl HeatStage {
     /// After the simulation: the heat falls by the simulated time, the cold stop may
     /// halt the world (not while a thrown node is `in_flight`), and the first unfolding
     /// ends at the floor (at once without a schedule).
-    pub(super) fn cool<N: Clone + Eq + Hash>(
+    pub(in crate::adapter) fn cool<N: Clone + Eq + Hash>(
         &mut self,
         config: &RapierLayoutConfig,
         simulated: f32,
@@ -264,7 +272,7 @@ impl HeatStage {
 
     /// Ends the first unfolding: contacts in (if they were left out) and firm from here
     /// on, so interactions always push. Returns whether contacts were let in.
-    pub(super) fn end_unfolding<N: Clone + Eq + Hash>(
+    pub(in crate::adapter) fn end_unfolding<N: Clone + Eq + Hash>(
         &mut self,
         world: Option<&mut RapierSceneWorld<N>>,
     ) -> bool {

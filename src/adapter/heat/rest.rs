@@ -3,10 +3,10 @@
 
 use std::hash::Hash;
 
-use super::heat::{Heat, HeatStage};
-use super::state::RapierLayoutState;
-use super::sync_out::FrameReport;
-use super::RapierLayout;
+use super::{Heat, HeatStage};
+use crate::adapter::state::RapierLayoutState;
+use crate::adapter::sync_out::FrameReport;
+use crate::adapter::RapierLayout;
 use crate::config::RapierLayoutConfig;
 use crate::config::REST_TIME;
 use crate::input::layout::DeltaMap;
@@ -27,7 +27,7 @@ impl HeatStage {
     /// At rest: calm for [`REST_TIME`] and every dynamic body asleep, so a converged
     /// layout reports no motion at all until something disturbs it; or halted by the
     /// cold stop.
-    pub(super) fn track_rest<N: Clone + Eq + Hash>(
+    pub(in crate::adapter) fn track_rest<N: Clone + Eq + Hash>(
         &mut self,
         config: &RapierLayoutConfig,
         disturbed: bool,
@@ -63,7 +63,7 @@ impl HeatStage {
     /// `alphaMin`. Forces are a thousandth of their strength by then, but in a large
     /// connected graph a few bodies jostling in contact would otherwise keep the whole
     /// graph (one rapier island) awake for ever.
-    pub(super) fn stop_when_cold<N: Clone + Eq + Hash>(
+    pub(in crate::adapter) fn stop_when_cold<N: Clone + Eq + Hash>(
         &mut self,
         config: &RapierLayoutConfig,
         floor: f32,
@@ -84,7 +84,7 @@ impl HeatStage {
                 if config.contacts.separates_disks() && world.contacts_enabled() {
                     // No overlap is left standing.
                     forces.part_overlaps(world);
-                    super::node_forces::hold_locked_axes(world, &forces.targets.locks);
+                    crate::adapter::node_forces::hold_locked_axes(world, &forces.targets.locks);
                 }
                 world.halt_dynamic_bodies();
                 let dt = world.integration_parameters().dt;
@@ -99,7 +99,7 @@ impl HeatStage {
 
 impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// A call on a halted layout: nothing moves until the next disturbance.
-    pub(super) fn halted_frame(
+    pub(in crate::adapter) fn halted_frame(
         &mut self,
         state: &mut RapierLayoutState,
         plan: &StepPlan,

@@ -1,7 +1,7 @@
 //! Local disturbance ([`Cooling::reheat_hops`](crate::config::Cooling::reheat_hops)): what a
 //! drag, a release, a host move, a pin or an edit touched this call, and the heat that
-//! spreads from it along the edges, hop by hop, to the nodes near it. The heat itself,
-//! and how it cools, is in `heat.rs`.
+//! spreads from it along the edges (a breadth-first search over `graph.rs`), hop by
+//! hop, to the nodes near it. The heat itself, and how it cools, is in `mod.rs`.
 
 use std::hash::Hash;
 
@@ -13,7 +13,7 @@ const HOP_FALLOFF: f32 = 0.5;
 
 /// The nodes touched this call and the buffers that spread their heat.
 #[derive(Debug, Default)]
-pub(super) struct Disturbances {
+pub(in crate::adapter) struct Disturbances {
     /// `(slot, whether it heats itself, whether its heat spreads to its neighbours)`.
     touched: Vec<(u32, bool, bool)>,
     /// Something that reheats the whole layout happened (a configuration or gravity
@@ -33,42 +33,42 @@ pub(super) struct Disturbances {
 impl Disturbances {
     /// Records that the node in `slot` was touched. A dragged or thrown node does not
     /// heat itself (`itself` false): it coasts, and its neighbours are heated.
-    pub(super) fn touch(&mut self, slot: usize, itself: bool) {
+    pub(in crate::adapter) fn touch(&mut self, slot: usize, itself: bool) {
         self.touched.push((slot as u32, itself, true));
     }
 
     /// Records a node that settles where it is without heating anything: a new node
     /// seated beside its neighbours (`seating.rs`) takes the heat of a coasting node and
     /// leaves its neighbourhood asleep.
-    pub(super) fn touch_settling(&mut self, slot: usize) {
+    pub(in crate::adapter) fn touch_settling(&mut self, slot: usize) {
         self.touched.push((slot as u32, false, false));
     }
 
     /// Records a disturbance of the whole layout.
-    pub(super) fn touch_everything(&mut self) {
+    pub(in crate::adapter) fn touch_everything(&mut self) {
         self.everything = true;
     }
 
     /// Whether the whole layout was disturbed this call.
-    pub(super) fn everything(&self) -> bool {
+    pub(in crate::adapter) fn everything(&self) -> bool {
         self.everything
     }
 
     /// Forgets this call's disturbances.
-    pub(super) fn clear(&mut self) {
+    pub(in crate::adapter) fn clear(&mut self) {
         self.touched.clear();
         self.everything = false;
     }
 
     /// Forgets the neighbour lists too (the world was dropped or built anew).
-    pub(super) fn reset(&mut self) {
+    pub(in crate::adapter) fn reset(&mut self) {
         self.clear();
         self.version = None;
     }
 
     /// Raises the heat of every node within `hops` of what was touched to at least
     /// `heat × 1/2^hop`, and wakes it.
-    pub(super) fn spread<N: Clone + Eq + Hash>(
+    pub(in crate::adapter) fn spread<N: Clone + Eq + Hash>(
         &mut self,
         world: &mut RapierSceneWorld<N>,
         hops: u32,

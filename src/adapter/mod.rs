@@ -65,6 +65,7 @@ use built::Built;
 use drag::Host;
 use heat::HeatStage;
 use matching::Matching;
+use node_forces::sync_node_forces;
 pub use resume::LayoutSnapshot;
 use skipped::Report;
 pub use state::RapierLayoutState;
@@ -207,13 +208,14 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// Under the `parallel` feature, whether another thread of the pool stays awake
     /// through each substep of a call when 2,048 bodies or more are awake: it takes the
     /// parallel parts as they come and yields its core between looks, where otherwise
-    /// it falls asleep between parts and takes tens of microseconds to wake for the
-    /// next. A `n10000_e25000` frame on two threads takes less time with it awake
+    /// it falls asleep between parts and takes time to wake for the next. A large
+    /// layout's frame on two threads takes less time with it awake
     /// (`docs/performance.md` gives the figures); the cost is that thread's core, busy
     /// through the serial parts of the substeps too (rapier's step among them; it lets
-    /// go after 2 ms without work). The results are the same bits either way. Without the feature it
-    /// does nothing. [`LayoutWorker::set_pool_awake`](crate::worker::LayoutWorker) passes it
-    /// on to a worker's layout.
+    /// go after 2 ms without work). The results are the same bits either way. Without
+    /// the feature it does nothing.
+    /// [`LayoutWorker::set_pool_awake`](crate::worker::LayoutWorker) passes it on to a
+    /// worker's layout.
     ///
     /// Default: on.
     ///
@@ -521,7 +523,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         disturbed |= self
             .host
             .sync_in(&input, world, &self.matching, spread, kept);
-        disturbed |= self.sync_node_forces(scene, extras);
+        let (world, spread) = (self.world.as_mut(), &mut self.heat.spread);
+        let targets = &mut self.forces.targets;
+        disturbed |= sync_node_forces(targets, scene, extras, &self.matching, world, spread);
         if cold {
             // NOTE: after the sync, which flips pinned bodies and reads the forces.
             disturbed = self.settle_cold();

@@ -10,85 +10,86 @@ use std::hash::Hash;
 
 use rapier2d::prelude::{LockedAxes, Vector};
 
-use super::matching::NO_SLOT;
-use super::RapierLayout;
+use super::heat::Disturbances;
+use super::matching::{Matching, NO_SLOT};
 use crate::forces::targets::NodeTargets;
 use crate::input::layout::LayoutExtras;
 use crate::input::node_forces::{AxisLock, NodeForces};
 use crate::input::scene::CanvasSceneInput;
 use crate::world::RapierSceneWorld;
 
-impl<N: Clone + Eq + Hash> RapierLayout<N> {
-    /// Reads `extras.forces` for the scene's usable nodes; returns whether any node's
-    /// forces changed (a disturbance: those nodes are woken and heated).
-    pub(super) fn sync_node_forces(
-        &mut self,
-        scene: &CanvasSceneInput<N>,
-        extras: &LayoutExtras<N>,
-    ) -> bool {
-        let targets = &mut self.forces.targets;
-        targets.problems = 0;
-        if extras.forces.is_empty() && targets.by_slot.is_empty() {
-            return false;
-        }
-        let Some(world) = self.world.as_mut() else {
-            *targets = NodeTargets::default();
-            return false;
-        };
-        let n = world.slot_count();
-        // The last call's table is the buffer this call's is written into.
-        let mut by_slot = std::mem::take(&mut targets.by_slot);
-        by_slot.clear();
-        by_slot.resize(n, NodeForces::default());
-        targets.locks.clear();
-        if !extras.forces.is_empty() {
-            for (node, &m) in scene.nodes.iter().zip(self.matching.matches()) {
-                if m.slot == NO_SLOT || !m.valid {
-                    continue;
-                }
-                if let Some(forces) = extras.forces.get(&node.id) {
-                    let usable = forces.usable();
-                    targets.problems += usize::from(usable != *forces);
-                    by_slot[m.slot as usize] = usable;
-                    // Held at the host's coordinate, which a body just inserted beside
-                    // another at the same point (and spread a little) may not have.
-                    let p = node.position;
-                    match usable.lock {
-                        Some(AxisLock::X) => targets.locks.push((m.slot, AxisLock::X, p.x)),
-                        Some(AxisLock::Y) => targets.locks.push((m.slot, AxisLock::Y, p.y)),
-                        None => {}
-                    }
-                }
-            }
-        }
-        // What each body had is kept with its slot (which moves with it when another
-        // node is removed), so a change is told apart from the last call's by node.
-        let mut changed = false;
-        let mut any = false;
-        for (s, now) in by_slot.iter().enumerate() {
-            let key = now.key();
-            any |= key != 0;
-            let host = world.host_at_mut(s);
-            let (was_key, was_lock) = (host.forces_key, host.lock);
-            (host.forces_key, host.lock) = (key, now.lock);
-            if was_lock != now.lock {
-                set_lock(world, s, now.lock);
-            }
-            if was_key != key {
-                changed = true;
-                self.heat.spread.touch(s, true);
-                let body = world.body_at_mut(s);
-                if body.is_dynamic() {
-                    body.wake_up(true);
-                }
-            }
-        }
-        if any {
-            targets.by_slot = by_slot;
-        }
-        targets.index();
-        changed
+/// Reads `extras.forces` for the scene's usable nodes (as `matching` found them) into
+/// `targets`; returns whether any node's forces changed (a disturbance: those nodes are
+/// woken, and touched in `spread`).
+pub(super) fn sync_node_forces<N: Clone + Eq + Hash>(
+    targets: &mut NodeTargets,
+    scene: &CanvasSceneInput<N>,
+    extras: &LayoutExtras<N>,
+    matching: &Matching<N>,
+    world: Option<&mut RapierSceneWorld<N>>,
+    spread: &mut Disturbances,
+) -> bool {
+    targets.problems = 0;
+    if extras.forces.is_empty() && targets.by_slot.is_empty() {
+        return false;
     }
+    let Some(world) = world else {
+        *targets = NodeTargets::default();
+        return false;
+    };
+    let n = world.slot_count();
+    // The last call's table is the buffer this call's is written into.
+    let mut by_slot = std::mem::take(&mut targets.by_slot);
+    by_slot.clear();
+    by_slot.resize(n, NodeForces::default());
+    targets.locks.clear();
+    if !extras.forces.is_empty() {
+        for (node, &m) in scene.nodes.iter().zip(matching.matches()) {
+            if m.slot == NO_SLOT || !m.valid {
+                continue;
+            }
+            if let Some(forces) = extras.forces.get(&node.id) {
+                let usable = forces.usable();
+                targets.problems += usize::from(usable != *forces);
+                by_slot[m.slot as usize] = usable;
+                // Held at the host's coordinate, which a body just inserted beside
+                // another at the same point (and spread a little) may not have.
+                let p = node.position;
+                match usable.lock {
+                    Some(AxisLock::X) => targets.locks.push((m.slot, AxisLock::X, p.x)),
+                    Some(AxisLock::Y) => targets.locks.push((m.slot, AxisLock::Y, p.y)),
+                    None => {}
+                }
+            }
+        }
+    }
+    // What each body had is kept with its slot (which moves with it when another
+    // node is removed), so a change is told apart from the last call's by node.
+    let mut changed = false;
+    let mut any = false;
+    for (s, now) in by_slot.iter().enumerate() {
+        let key = now.key();
+        any |= key != 0;
+        let host = world.host_at_mut(s);
+        let (was_key, was_lock) = (host.forces_key, host.lock);
+        (host.forces_key, host.lock) = (key, now.lock);
+        if was_lock != now.lock {
+            set_lock(world, s, now.lock);
+        }
+        if was_key != key {
+            changed = true;
+            spread.touch(s, true);
+            let body = world.body_at_mut(s);
+            if body.is_dynamic() {
+                body.wake_up(true);
+            }
+        }
+    }
+    if any {
+        targets.by_slot = by_slot;
+    }
+    targets.index();
+    changed
 }
 
 /// Sets the rapier lock flags of the body in slot `s` to `lock` (rotation stays locked),

@@ -62,11 +62,11 @@ pub(super) fn sync_out<N: Clone + Eq + Hash>(
             slots.sort_unstable();
             Moved::of(world, slots.iter().map(|&s| s as usize), epsilon_sq)
         }
-        None => Moved::of(world, matched_slots(scene, &matching), epsilon_sq),
+        None => Moved::of(world, matched_slots(scene, matching), epsilon_sq),
     };
     #[cfg(debug_assertions)]
     if world.changed_slots().is_some() {
-        let every = Moved::of(world, matched_slots(scene, &matching), epsilon_sq);
+        let every = Moved::of(world, matched_slots(scene, matching), epsilon_sq);
         moved.check_against(every);
     }
     report.awake = moved.awake;

@@ -61,13 +61,14 @@ pub struct Cooling {
     /// with the heat itself. At 1 they fade together and the shape they balance at stays
     /// the same. Below 1 springs outlast repulsion as the layout cools and edges draw
     /// toward their rest length at the end: with the other
-    /// [`force_directed`](crate::RapierLayoutConfig::force_directed) settings, 0.7 takes
-    /// `tree_1023`'s edge-length CV from 0.56 to 0.44 and `grid_30x30`'s from 0.31 to
-    /// 0.25 (ten-start means, `docs/performance.md`). The price is pressure: the final pull presses large
-    /// graphs together, so contacts are busier and need more than one solver pass to
-    /// hold it, and a graph that cannot reach its rest lengths jams
+    /// [`force_directed`](crate::RapierLayoutConfig::force_directed) settings, 0.7
+    /// narrows the edge-length spread of trees and grids most (`docs/performance.md`,
+    /// At scale, measures each setting). The price is pressure: the final pull presses
+    /// large graphs together, so contacts are busier and need more than one solver pass
+    /// to hold it, and a graph that cannot reach its rest lengths jams
     /// ([`stretch_limit`](Self::stretch_limit) lets such graphs out); lower exponents
-    /// compact the layout further. Values outside `[0, 1]`, or not finite, count as 1. Default: `1.0`
+    /// compact the layout further. Values outside `[0, 1]`, or not finite, count as 1.
+    /// Default: `1.0`
     /// ([`RapierLayoutConfig::force_directed`](crate::RapierLayoutConfig::force_directed)
     /// uses `0.7`).
     pub spring_exponent: f32,
@@ -76,17 +77,16 @@ pub struct Cooling {
     /// heat itself, like repulsion, instead of `heat^spring_exponent` (fully once the
     /// median is twice the limit, geometrically blended in between), so they no longer
     /// outlast repulsion. `None` always uses `heat^spring_exponent`. The median is read
-    /// at each re-tune. Without it a dense random graph (`n10000_e25000` ends with a
-    /// mean edge near 7 times its rest length) is pulled together by its long springs
-    /// as the layout cools, tighter than contacts can hold it. With the other
-    /// [`force_directed`](crate::RapierLayoutConfig::force_directed) settings, 2 takes
-    /// `n10000_e25000` from thousands of overlapping pairs at rest to dozens and its
-    /// 95th-percentile step down by a third (`docs/performance.md`), for an edge-length
-    /// CV of 0.50 against
-    /// 0.49 (d3-force: 0.50); `n1000_e2500` rests without overlaps either way. The six small shipped
-    /// graphs stay below the limit (their CVs move in the third decimal at most). Costs one length per
-    /// spring and a median at each re-tune. Has no effect at `spring_exponent` 1. Values
-    /// that are not finite and positive count as `None`. Default: `None`
+    /// at each re-tune. Without it a dense random graph, whose edges end several times
+    /// their rest length, is pulled together by its long springs as the layout cools,
+    /// tighter than contacts can hold it. With the other
+    /// [`force_directed`](crate::RapierLayoutConfig::force_directed) settings, 2 leaves
+    /// such a graph far fewer overlapping pairs at rest and a cheaper 95th-percentile
+    /// step, at much the same edge-length spread; graphs that reach their rest lengths
+    /// stay below the limit and hardly change (`docs/performance.md` gives the figures).
+    /// Costs one length per spring and a median at each re-tune. Has no effect at
+    /// `spring_exponent` 1. Values that are not finite and positive count as `None`.
+    /// Default: `None`
     /// ([`RapierLayoutConfig::force_directed`](crate::RapierLayoutConfig::force_directed)
     /// uses 2).
     pub stretch_limit: Option<f32>,
@@ -98,25 +98,25 @@ pub struct Cooling {
     /// [`ContactSoftness::natural_frequency`](crate::config::ContactSoftness) at the floor, so
     /// nodes slip past each other instead of jamming while the graph spreads, and no
     /// overlap remains at rest. Later reheats (drags, edits) keep contacts firm, so a
-    /// dragged node always pushes. With the other `force_directed()` settings (measured
-    /// with two solver iterations and before [`stretch_limit`](Self::stretch_limit)),
-    /// 5 Hz took a quarter off `n10000_e25000`'s step and the CV of `n1000_e2500` from
-    /// 0.41 to 0.38; the six small graphs do not change. Costs nothing per step. Default: `None`
+    /// dragged node always pushes. With the other `force_directed()` settings, 5 Hz made
+    /// random graphs' steps cheaper and their edge-length spread narrower, and left the
+    /// small graphs as they were (`docs/performance.md` gives the figures and the
+    /// configuration they were measured in). Costs nothing per step. Default: `None`
     /// ([`RapierLayoutConfig::force_directed`](crate::RapierLayoutConfig::force_directed)
     /// uses 5 Hz).
     pub hot_contact_frequency: Option<f32>,
     /// During the layout's first unfolding, contacts are left out until the heat first
     /// falls to this (never below the floor); `None` keeps them from the start. A fresh
     /// scatter collapses under full-strength springs into thousands of overlapping
-    /// pairs, which cost rapier's broad and narrow phases most of the step: on
-    /// `n10000_e25000`, 0.3 makes the first second's steps many times cheaper and the
-    /// whole layout twice as fast (`docs/performance.md`). If the layout rests before, contacts come in then.
-    /// Later reheats (drags, edits, topology changes) keep contacts on, so an interaction
-    /// never lets nodes pass through each other. The trade: a graph that starts without
-    /// contacts untangles differently; with the other `force_directed()` settings,
-    /// `n200_e500`'s edge-length CV is 0.26 against 0.35 with contacts from the start,
-    /// and `tree_1023`'s 0.44 against 0.48 (ten-start means, `docs/performance.md`). No contact events are reported while contacts
-    /// are left out. Default: `None`
+    /// pairs, which cost rapier's broad and narrow phases most of the step: on a large
+    /// graph, 0.3 makes the first second's steps much cheaper and the whole layout
+    /// faster (`docs/performance.md` gives the times). If the layout rests before,
+    /// contacts come in then. Later reheats (drags, edits, topology changes) keep
+    /// contacts on, so an interaction never lets nodes pass through each other. The
+    /// trade: a graph that starts without contacts untangles differently; with the other
+    /// `force_directed()` settings its edge lengths spread less than with contacts from
+    /// the start (`docs/performance.md`, At scale, measures each setting). No contact events
+    /// are reported while contacts are left out. Default: `None`
     /// ([`RapierLayoutConfig::force_directed`](crate::RapierLayoutConfig::force_directed)
     /// uses `0.3`).
     pub first_contact_heat: Option<f32>,
@@ -144,13 +144,10 @@ pub struct Cooling {
     /// set to the heat at which springs have this share, and cools from there). Higher
     /// draws a throw back sooner and flies it less far; lower lets it coast further and
     /// come back more slowly, and too low leaves it where it landed when the schedule
-    /// ends. Measured on `les_miserables` and `karate` (`docs/feel.md`), throws of 1,800
-    /// units/s: with `force_directed()`, 0.01 flies them 135 and 176 units on and
-    /// draws them back at up to 540 units/s, 0.05 flies them 24 and 38 units and
-    /// brings them back at up to 1,690; with `force_directed_fast()` (springs that fade
-    /// with the heat itself, no link bias) 0.01 flies them 451 and 328 units and leaves
-    /// them there (edge-length CV 0.23 to 0.50 on karate), 0.05 flies them 134 and 86
-    /// units and draws them back within 3 s (CV 0.23 to 0.25). Values outside `[0, 1]`
+    /// ends. Under `force_directed()` 0.01 lets a throw fly on and draws it back; under
+    /// `force_directed_fast()`, whose springs fade with the heat itself, 0.01 leaves a
+    /// thrown node where it landed, and 0.05 draws it back (`docs/feel.md` and
+    /// `docs/performance.md` give the distances and speeds). Values outside `[0, 1]`
     /// are clamped, non-finite ones count as 0 (the floor). Default: `0.01`
     /// ([`RapierLayoutConfig::force_directed_fast`](crate::RapierLayoutConfig::force_directed_fast)
     /// uses `0.05`).

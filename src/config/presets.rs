@@ -37,8 +37,7 @@ impl RapierLayoutConfig {
     ///   median length is over twice their rest length ([`Cooling::stretch_limit`] 2;
     ///   fully like the heat from four times, blended in between): such a graph cannot
     ///   reach its rest lengths, and springs that outlast repulsion would only pack it
-    ///   into overlaps (5,165 overlapping pairs at rest on `n10000_e25000` without the
-    ///   limit, 69 with it);
+    ///   into overlaps (`docs/performance.md` counts them with and without the limit);
     /// - collide at the node radius: the layout's own disk separation
     ///   ([`ContactModel::Disks`]: soft contacts on a uniform grid, firm at 240 Hz, ζ = 1,
     ///   [`ContactSoftness`]) instead of rapier's pair bookkeeping, and the overlaps
@@ -52,21 +51,21 @@ impl RapierLayoutConfig {
     ///
     /// And beyond d3-force, for the feel:
     /// - a disturbance (drag, release, host move, pin, edit) heats only the touched
-    ///   nodes and their neighbours ([`Cooling::reheat_hops`] 1), so on `les_miserables`
-    ///   the nodes three or more hops away move less than a unit (d3's whole-graph
-    ///   reheat, `reheat_hops: None`, moves them about 100 units); a dragged or thrown
-    ///   node's springs pull with 1 % of their strength after the release
+    ///   nodes and their neighbours ([`Cooling::reheat_hops`] 1), so the nodes three or
+    ///   more hops away hardly move, where d3's whole-graph reheat (`reheat_hops: None`)
+    ///   moves all of them (`docs/feel.md` measures both); a dragged or thrown node's
+    ///   springs pull with 1 % of their strength after the release
     ///   ([`Cooling::coasting_spring_scale`]);
     /// - a thrown node is damped at 1/s until it turns back
-    ///   ([`Throw::flight_damping`] 1): a throw of 1,800 units/s flies
-    ///   135 to 180 units further and is drawn back at up to about 550 units/s.
+    ///   ([`Throw::flight_damping`] 1): a throw flies on past where it was let go and
+    ///   is drawn back (`docs/feel.md` gives the distances and speeds).
     ///
     /// Every shipped graph comes to rest (every body asleep, or halted at the end of the
     /// schedule) within 300 frames of the last disturbance, with no overlapping pair on
     /// the graphs of up to 1,000 nodes (`docs/quality.md`: edge-length spread, frames and step
-    /// times beside d3-force's). On `n10000_e25000` a step takes about a tenth of
-    /// d3-force's tick, and [`force_directed_fast`](Self::force_directed_fast) half of
-    /// this preset's, without collisions (`docs/performance.md` gives the times).
+    /// times beside d3-force's). On large graphs a step takes a fraction of d3-force's
+    /// tick, and [`force_directed_fast`](Self::force_directed_fast) less again, without
+    /// collisions (`docs/performance.md` gives the times).
     ///
     /// # Example
     /// ```
@@ -129,14 +128,14 @@ impl RapierLayoutConfig {
     /// [`force_directed`](Self::force_directed) without collisions, with d3's full
     /// degree share (spring exponent 1), springs that fade with the heat itself and no
     /// link bias: the fastest force-directed setting, for graphs of thousands of nodes.
-    /// Repulsion alone keeps nodes apart, so some overlap where springs pull hard (833
-    /// pairs on `n1000_e2500`; d3-force leaves 347); the stiffer hub springs and the
-    /// bias of `force_directed()` would press twice as many together without contacts.
-    /// In exchange there is no pair search: on `n10000_e25000` a step takes half of
-    /// `force_directed()`'s, at the median and the 95th percentile
-    /// (`docs/performance.md`). Its springs, fading
-    /// with the heat, are weak once the layout rests, so a thrown node's springs pull with 5 % of their
-    /// strength ([`Cooling::coasting_spring_scale`]) to bring it back.
+    /// Repulsion alone keeps nodes apart, so some overlap where springs pull hard, as
+    /// under d3-force; the stiffer hub springs and the bias of `force_directed()` would
+    /// press more together without contacts. In exchange there is no pair search, and a
+    /// step costs less than `force_directed()`'s, at the median and the 95th percentile
+    /// (`docs/performance.md` counts the overlaps and gives the times). Its springs,
+    /// fading with the heat, are weak once the layout rests, so a thrown node's springs
+    /// pull with 5 % of their strength ([`Cooling::coasting_spring_scale`]) to bring it
+    /// back.
     ///
     /// # Example
     /// ```

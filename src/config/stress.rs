@@ -91,9 +91,9 @@ pub struct StressModel {
     /// The pivot terms are worked out every this many substeps and held in between as
     /// their first-order model (the force less their stiffness times the way moved since),
     /// while the exact terms and edges are worked out every substep. Far pairs change
-    /// slowly: 4 takes well over half of the step's time off `n10000_e25000` with the
-    /// same stress at rest (`docs/quality.md` has the figures and the command); longer
-    /// periods lag a fast node's far pulls more. Default: `4`.
+    /// slowly, so holding them for a few substeps takes most of the pivot work off a step
+    /// and leaves the stress at rest the same (`docs/quality.md` and `docs/performance.md`
+    /// measure it); longer periods lag a fast node's far pulls more. Default: `4`.
     pub pivot_period: u32,
 }
 

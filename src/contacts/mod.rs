@@ -49,10 +49,9 @@ use shapes::{box_contact, Side};
 const WAKE_SPEED: f32 = 5.0;
 /// Two bodies asleep with a deeper overlap than this (world units) are woken and parted.
 const SLEEPING_OVERLAP: f32 = 0.25;
-/// Passes over the pairs before the step, and after it. Four after it leave the six
-/// shipped graphs and `n1000_e2500` as eight did (the same spreads within 0.003, no
-/// overlap at rest) and save a sixth of a `n10000_e25000` step; two leave overlaps in
-/// `n1000_e2500`.
+/// Passes over the pairs before the step, and after it. Fewer passes after the step
+/// save time; four leave the pictures as eight did, and two leave overlaps at rest
+/// (`docs/performance.md` gives the figures).
 const PASSES: usize = 8;
 const RELAX_PASSES: usize = 4;
 /// Pairs a run of the separations after the step takes (side by side under `parallel`).

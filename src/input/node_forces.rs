@@ -23,9 +23,9 @@ pub struct AxisTarget {
     /// so any strength is stable and the node rests where its forces balance. The edge
     /// springs of [`force_directed`](crate::RapierLayoutConfig::force_directed) have
     /// strength 0.5 at a leaf: 0.1 to 1 is a bias they can overrule, 20 or more holds
-    /// nodes within a few units of their targets (a radial karate at 50: 3.1 units off
-    /// on average; where targets crowd, disks sit up to a radius off them), and higher
-    /// strengths also move a node to a changed target faster.
+    /// nodes near their targets (where targets crowd, disks sit up to a radius off them;
+    /// `docs/forces.md` measures how near), and higher strengths also move a node to a
+    /// changed target faster.
     /// Must be finite and `>= 0`.
     pub strength: f32,
 }

@@ -11,7 +11,7 @@
 //! - `slot.rs`: the per-node and per-joint bookkeeping;
 //! - `nodes.rs`: inserting and removing bodies, radius edits;
 //! - `edges.rs`: inserting, re-tuning and removing joints; `rapier_joint.rs`: what each
-//!   [`EdgeJoint`](crate::EdgeJoint) becomes in rapier; `spring_scale.rs`: every spring
+//!   [`EdgeJoint`] becomes in rapier; `spring_scale.rs`: every spring
 //!   scaled at once (cooling);
 //! - `bodies.rs`: the host's per-node calls (read, drive, teleport, flip kinds, impulses);
 //! - `activity.rs`: sleep, wake, halt, and contacts on or off;

@@ -10,9 +10,8 @@ use super::{ManyBody, Query, NONE};
 use crate::parallel;
 
 /// Most points that share one walk in [`ManyBody::forces`]: larger groups walk the tree
-/// less often but sum longer lists. 64 was the fastest of 8 to 256 on `n10000_e25000`
-/// and the 100,000-node generated graph (`cargo bench --bench many_body`;
-/// `docs/performance.md`), with 32 as fast within the noise.
+/// less often but sum longer lists. 64 was chosen by timing the sizes from 8 to 256
+/// (`docs/performance.md` gives the times and the command).
 const GROUP_SIZE: usize = 64;
 /// Independent partial sums per force, so the sum runs in vector registers.
 const LANES: usize = 8;
@@ -31,9 +30,9 @@ impl ManyBody {
     /// members sum that list two at a time in a vectorised loop. A cell is taken whole
     /// only where [`force_on`](Self::force_on) would take it whole for every member;
     /// the cells holding a member and leaves never are. So the pass opens at least the
-    /// cells `force_on` opens and its mean error is no larger (on `n10000_e25000` at
-    /// theta 0.9, 0.59 % against 0.83 %; single points can land either side), theta 0 is
-    /// still the exact sum (`docs/performance.md` times a build and a pass).
+    /// cells `force_on` opens and its mean error is no larger (single points can land
+    /// either side), theta 0 is still the exact sum (`docs/performance.md` measures the
+    /// error and times a build and a pass).
     ///
     /// # Example
     /// ```

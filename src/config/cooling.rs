@@ -107,7 +107,7 @@ pub struct Cooling {
     pub hot_contact_frequency: Option<f32>,
     /// During the layout's first unfolding, contacts are left out until the heat first
     /// falls to this (never below the floor); `None` keeps them from the start. A fresh
-    /// scatter collapses under full-strength springs into thousands of overlapping
+    /// scatter collapses under full-strength springs into many overlapping
     /// pairs, which cost rapier's broad and narrow phases most of the step: on a large
     /// graph, 0.3 makes the first second's steps much cheaper and the whole layout
     /// faster (`docs/performance.md` gives the times). If the layout rests before,

@@ -58,7 +58,8 @@ const RELAX_PASSES: usize = 4;
 const SEPARATION_RUN: usize = 2_048;
 /// Bodies a run of the reads after the step takes (fixed: each read is its own).
 const READ_RUN: usize = 1_024;
-/// How many runs of the pairs a pass works through side by side (eight were slower).
+/// How many runs of the pairs a pass works through side by side (more cost more than
+/// they save: `docs/performance.md`).
 const STREAMS: usize = 4;
 /// A pass that changes no pair's relative speed by more than this (world units per
 /// second) ends the passes.

@@ -22,23 +22,54 @@ def files(entry):
                 if n.endswith(".rs"):
                     yield os.path.join(root, n)
 
+def code_of(text):
+    """The file's code: comments left out, and the `use` after a `#[cfg(doc)]` (it
+    serves doc links only)."""
+    out, skip_use = [], False
+    for line in text.split("\n"):
+        stripped = line.strip()
+        if stripped.startswith("#[cfg(doc)]"):
+            skip_use = True
+            continue
+        if skip_use and stripped.startswith("use "):
+            # Through the end of the statement.
+            skip_use = not stripped.endswith(";")
+            skip_use = "statement" if skip_use else False
+            continue
+        if skip_use == "statement":
+            skip_use = "statement" if not stripped.endswith(";") else False
+            continue
+        skip_use = False
+        out.append(line.split("//")[0])
+    return "\n".join(out)
+
+def targets(code):
+    """Every top-level module named after `crate::`, in plain paths and in groups
+    (`crate::{a::X, b::{Y, Z}}`)."""
+    found = set(re.findall(r"crate::(\w+)", code))
+    for start in [m.end() for m in re.finditer(r"crate::\{", code)]:
+        depth, item, i = 1, "", start
+        while i < len(code) and depth:
+            c = code[i]
+            if c == "{":
+                depth += 1
+            elif c == "}":
+                depth -= 1
+            if depth == 1 and c == ",":
+                found.add(item.strip().split("::")[0])
+                item = ""
+            elif depth >= 1 and not (depth == 1 and c in "{}"):
+                item += c if depth == 1 else ""
+            i += 1
+        found.add(item.strip().split("::")[0])
+    return found
+
 deps = {m: set() for m in mods}
 for m, entry in mods.items():
     for path in files(entry):
-        text = open(path).read()
-        in_test = False
-        for line in text.split("\n"):
-            code = line.split("//")[0]
-            if line.strip().startswith("#[cfg(doc)]"):
-                in_test = True  # the next `use` serves doc links only
-                continue
-            if in_test and code.strip().startswith("use "):
-                in_test = False
-                continue
-            in_test = False
-            for target in re.findall(r"crate::(\w+)", code):
-                if target in mods and target != m:
-                    deps[m].add(target)
+        for target in targets(code_of(open(path).read())):
+            if target in mods and target != m:
+                deps[m].add(target)
 
 for m in sorted(deps):
     print(f"{m:12} -> {', '.join(sorted(deps[m])) or '-'}")

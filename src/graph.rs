@@ -2,7 +2,7 @@
 //! neighbours per node) and one breadth-first search over it ([`Graph::search`]), from
 //! one node or many, bounded or not, with hops held as `u16` (the stress model's
 //! tables, [`UNREACHED`]) or `u32`. The stress model (`stress/`), the heat spread by a
-//! disturbance (`adapter/disturbance.rs`) and the quality measures (`quality.rs`) all
+//! disturbance (`adapter/heat/spread.rs`) and the quality measures (`quality.rs`) all
 //! walk it. Nodes are numbered `0..n` (the world's slots, or the scene's order).
 
 /// Hops to a node no path reaches, in the stress model's `u16` tables.

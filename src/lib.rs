@@ -53,12 +53,32 @@
 //!   newest positions without waiting.
 //!
 //! ## How it is built
-//! The crate's modules are private except [`quality`]; everything else public is
-//! re-exported at the root.
-//! `docs/design.md` in the repository gives the module map, the order in which one
-//! [`Layout::step`] runs through them, and the physics of each preset;
-//! `docs/quality.md`, `docs/feel.md`, `docs/performance.md` and `docs/tradeoff.md`
-//! hold the measurements.
+//! The root holds the contract and the names of the usual loop; [`prelude`] imports
+//! them at once. The public modules hold the rest: [`scene`] (per-node forces' parts,
+//! scene files, the topology hash), [`config`] (the configuration's groups and models),
+//! [`world`] (the world's types and limits), [`worker`], [`profile`] and [`quality`].
+//!
+//! One [`Layout::step`] runs these stages in order (`src/adapter/mod.rs`, `advance`),
+//! each borrowing only the part of the layout it touches:
+//! 1. **Plan** (`adapter/substeps.rs`): the frame time as equal substeps.
+//! 2. **Reconfigure** (`adapter/reconfigure.rs`): a changed configuration drops the
+//!    world or replaces its joints.
+//! 3. **Match and edit** (`adapter/matching.rs`, `adapter/edits.rs`): scene nodes to
+//!    bodies; a changed topology patches the world, or builds it (under
+//!    [`RapierLayoutConfig::stress`] from the stress model's start, `stress/`).
+//! 4. **Sync in** (`adapter/sync_in.rs`, `adapter/drag.rs`, `adapter/node_forces.rs`):
+//!    pins, drags, throws, host moves, per-node forces, gravity.
+//! 5. **Heat** (`adapter/heat/`): a disturbance reheats all of a cooling layout or the
+//!    neighbourhood it touched.
+//! 6. **Simulate** (`adapter/substeps.rs`, `simulate/`): per substep the drives, the
+//!    forces of `forces/` and the stress terms run from one registry, one rapier step,
+//!    the disk separation of `contacts/`; then the heat cools.
+//! 7. **Sync out** (`adapter/sync_out.rs`): each free node's displacement.
+//! 8. **Rest** (`adapter/heat/rest.rs`): the convergence signal.
+//!
+//! `docs/design.md` in the repository gives the module map with what each module
+//! imports (one way, no cycle), and the physics of each preset; `docs/quality.md`,
+//! `docs/feel.md`, `docs/performance.md` and `docs/tradeoff.md` hold the measurements.
 //!
 //! ## Feature flags
 //! - `petgraph`: `CanvasSceneInput::from_petgraph` and `from_petgraph_with` for any
@@ -126,8 +146,8 @@
 //! local frame and translate on display).
 //!
 //! **Which layout preset?** [`RapierLayoutConfig::stress`] to lay a graph out: it keeps
-//! graph distances as stress majorization does (within a few percent of stress SGD's
-//! stress on the standard test graphs) and starts from a global layout, so the first
+//! graph distances as stress majorization does (`docs/quality.md` compares its stress
+//! with stress SGD's on the standard test graphs) and starts from a global layout, so the first
 //! frame shows the graph's shape. [`RapierLayoutConfig::force_directed`] is d3-force's
 //! model (repulsion, springs, collisions); `force_directed_fast` leaves out the
 //! collisions. The default configuration has no layout forces: a physical canvas

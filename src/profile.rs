@@ -10,7 +10,8 @@ use std::time::{Duration, Instant};
 /// Wall-clock time on the calling thread (the stages that run on rayon's pool under
 /// the `parallel` feature count the time until the pool is done). Compare two
 /// configurations, or one and two threads, in the same session: a shared machine's
-/// load moves the figures by a fifth and more.
+/// load moves the figures from one session to the next (`docs/performance.md` says by
+/// how much).
 ///
 /// # Example
 /// ```

@@ -9,7 +9,7 @@
 use arbitrary::{Result, Unstructured};
 use graph_canvas_layout::{BodyKindPolicy, EdgeJoint, NodeForces, RapierLayoutConfig};
 use graph_canvas_layout::scene::AxisLock;
-use graph_canvas_layout::config::TopologyUpdate;
+use graph_canvas_layout::config::{Contacts, TopologyUpdate};
 use libfuzzer_sys::fuzz_target;
 
 #[path = "../../tests/common/mod.rs"]
@@ -17,7 +17,6 @@ mod common;
 
 use common::session::{run, run_resuming, Action};
 use common::FRAME;
-use graph_canvas_layout::config::{Contacts};
 
 /// Ids the session draws from: few, so actions meet the same nodes again.
 const IDS: u32 = 12;

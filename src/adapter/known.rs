@@ -1,9 +1,10 @@
 //! Changes a caller vouches for. A host that hands [`Layout::step`](crate::Layout) its
 //! scene is matched and synced node by node each call, since any node may have changed;
 //! a caller that owns the scene and applies every change itself (the worker,
-//! `worker/thread.rs`) knows which nodes it changed, and lists them. A settled
-//! 100,000-node graph under a drag then costs a call what the listed nodes cost, where
-//! matching and syncing every node was a third of the call.
+//! `worker/thread.rs`) knows which nodes it changed, and lists them. A large settled
+//! graph under a drag then costs a call what the listed nodes cost, where matching and
+//! syncing every node (O(n) a call) was a large share of it (`docs/performance.md`, A
+//! layout on its own thread, gives it).
 //!
 //! The promise a list makes ([`RapierLayout::step_known`]): since the last call, the
 //! scene kept its node ids, their order and its edges, `extras` kept its pins and

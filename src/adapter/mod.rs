@@ -108,17 +108,19 @@ pub struct RapierLayout<N> {
     /// collision changes rebuild the world, joint changes replace the joints).
     pub config: RapierLayoutConfig,
     world: Option<RapierSceneWorld<N>>,
-    /// What the world was built from and how often: stage 2 and 3.
+    /// What the world was built from and how often: stages 2 and 3 write it.
     built: Built,
-    /// Scene nodes matched to bodies this call: stage 3.
+    /// Scene nodes matched to bodies this call: stage 3 writes it, 4 and 7 read it.
     matching: Matching<N>,
-    /// Drives, throws and gravity: stage 4.
+    /// Drives, throws and gravity: stage 4 writes it, 6 reads and lands the throws.
     host: Host<N>,
-    /// The heat, what this call disturbed, and the rest signal: stages 5 and 8.
+    /// The heat, what this call disturbed, and the rest signal: stages 4 (what was
+    /// touched), 5, 6 (cooling) and 8.
     heat: HeatStage,
-    /// The forces, their registry and the disk separation: stage 6.
+    /// The forces, their registry and the disk separation: stage 6 (and the host's
+    /// per-node table, stage 4).
     forces: Forces<N>,
-    /// What the last call recovered and left out: stage 7.
+    /// What the call left out (stage 4) and recovered (stage 6).
     report: Report<N>,
     /// [`RapierLayout::set_pool_awake`].
     pool_awake: bool,
@@ -510,22 +512,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let known =
             known.filter(|changed| !reconfigured && self.rematch_known(scene, extras, changed));
         let mut disturbed = known.is_none() && self.sync_topology(scene, extras);
-        // 4. Sync in. NOTE: every drive comes with a disturbance from `sync_in`.
-        let input = HostInput {
-            config: &self.config,
-            scene,
-            extras,
-            frame_dt: plan.frame_dt,
-            known,
-        };
-        let kept = self.forces.kept_bodies();
-        let (world, spread) = (self.world.as_mut(), &mut self.heat.spread);
-        disturbed |= self
-            .host
-            .sync_in(&input, world, &self.matching, spread, kept);
-        let (world, spread) = (self.world.as_mut(), &mut self.heat.spread);
-        let targets = &mut self.forces.targets;
-        disturbed |= sync_node_forces(targets, scene, extras, &self.matching, world, spread);
+        // 4. Sync in.
+        disturbed |= self.sync_host(scene, extras, plan.frame_dt, known);
         if cold {
             // NOTE: after the sync, which flips pinned bodies and reads the forces.
             disturbed = self.settle_cold();
@@ -549,7 +537,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             .world
             .as_ref()
             .map_or(0, RapierSceneWorld::awake_body_count);
-        // 6. Simulate.
+        // 6. Simulate, then cool.
         if let Some(world) = self.world.as_mut() {
             let heat = self.heat.heat_world(&self.config, Some(&mut *world));
             let substeps = Substeps {
@@ -587,5 +575,33 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.world.as_mut(),
         );
         report.deltas
+    }
+
+    /// Stage 4: the host's pins, drags, releases and moves onto the bodies, then its
+    /// per-node forces. Returns whether the host disturbed the layout.
+    fn sync_host(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+        frame_dt: f32,
+        known: Option<&[usize]>,
+    ) -> bool {
+        let input = HostInput {
+            config: &self.config,
+            scene,
+            extras,
+            frame_dt,
+            known,
+        };
+        let kept = self.forces.kept_bodies();
+        let (world, spread) = (self.world.as_mut(), &mut self.heat.spread);
+        // NOTE: every drive comes with a disturbance from `sync_in`.
+        let mut disturbed = self
+            .host
+            .sync_in(&input, world, &self.matching, spread, kept);
+        let (world, spread) = (self.world.as_mut(), &mut self.heat.spread);
+        let targets = &mut self.forces.targets;
+        disturbed |= sync_node_forces(targets, scene, extras, &self.matching, world, spread);
+        disturbed
     }
 }

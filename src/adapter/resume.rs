@@ -32,10 +32,10 @@ use crate::world::RapierSceneWorld;
 /// (in a format that keeps `f32` exactly, as JSON through `serde_json` does) and restore
 /// the layout in a later session: the restored layout gives the same deltas, bit for bit,
 /// as the one that never stopped, for the same build, scene and extras. It stores what
-/// the bodies are, not how the host drew them: 2.6 KB a node as JSON (edges included) on
-/// a random graph of 10,000 nodes and 25,000 edges under
-/// [`force_directed`](RapierLayoutConfig::force_directed), several times that with
-/// rapier's contacts, whose manifolds it keeps (`docs/performance.md`, Keep and resume).
+/// the bodies are, not how the host drew them: under
+/// [`force_directed`](RapierLayoutConfig::force_directed) its size grows linearly with
+/// the nodes and edges, and it is larger with rapier's contacts, whose manifolds it
+/// keeps (`docs/performance.md`, Keep and resume, gives the sizes as JSON).
 ///
 /// # Example
 /// ```

@@ -10,6 +10,7 @@ use super::RapierLayout;
 use crate::input::layout::LayoutExtras;
 use crate::input::scene::CanvasSceneInput;
 use crate::input::validation::{problems, LayoutError};
+use crate::world::RapierSceneWorld;
 
 /// What a call reports beside its deltas: the nodes whose bodies were recovered from a
 /// non-finite state, and what it left out.
@@ -26,6 +27,16 @@ impl<N> Default for Report<N> {
         Self {
             recovered: Vec::new(),
             skipped: Vec::new(),
+        }
+    }
+}
+
+impl<N: Clone + Eq + Hash> Report<N> {
+    /// Takes the nodes rapier quarantined during this call's steps.
+    pub(super) fn collect_recovered(&mut self, world: Option<&mut RapierSceneWorld<N>>) {
+        self.recovered.clear();
+        if let Some(world) = world {
+            self.recovered.extend(world.take_recovered_nodes());
         }
     }
 }

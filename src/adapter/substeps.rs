@@ -10,7 +10,6 @@ use euclid::default::Vector2D;
 use super::drag::{drive_kinematic_bodies, stale_ccd_in, Drive};
 use super::heat::FrameHeat;
 use super::node_forces::hold_locked_axes;
-use super::skipped::Report;
 use super::state::RapierLayoutState;
 use crate::config::cooling::HeatLaw;
 use crate::config::{RapierLayoutConfig, SolverSettings};
@@ -129,16 +128,6 @@ impl<N: Clone + Eq + Hash> Substeps<'_, N> {
                     hold_locked_axes(world, &forces.targets.locks);
                 }
             });
-        }
-    }
-}
-
-impl<N: Clone + Eq + Hash> Report<N> {
-    /// Takes the nodes rapier quarantined during this call's steps.
-    pub(super) fn collect_recovered(&mut self, world: Option<&mut RapierSceneWorld<N>>) {
-        self.recovered.clear();
-        if let Some(world) = world {
-            self.recovered.extend(world.take_recovered_nodes());
         }
     }
 }

@@ -154,7 +154,7 @@ struct SyncPass<'a, N> {
 impl<N: Clone + Eq + Hash> SyncPass<'_, N> {
     /// Syncs one matched node; returns whether it disturbed the layout.
     // NOTE: inlined into the loop over every node, where a call per node would cost a
-    // resting layout a fifth of its step.
+    // resting layout a noticeable share of its step (`docs/performance.md` gives it).
     #[inline(always)]
     fn node(&mut self, node: &CanvasNode<N>, m: NodeMatch, dragging: bool) -> bool {
         let s = m.slot as usize;

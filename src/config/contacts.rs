@@ -9,9 +9,10 @@ use serde::{Deserialize, Serialize};
 #[cfg(doc)]
 use crate::BodyKindPolicy;
 
-/// Whether and how nodes collide. Changing `enabled`, `model` or `events` between calls
-/// rebuilds the world (every body starts again at rest); `softness` takes effect at the
-/// next call.
+/// Whether and how nodes collide. A change between calls that adds or removes rapier's
+/// colliders or contact events (`enabled` or `model` with rapier's contacts, `events`)
+/// rebuilds the world: every body starts again at rest. Turning the layout's own disk
+/// separation on or off, and `softness`, take effect at the next call.
 ///
 /// # Example
 /// ```

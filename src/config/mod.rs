@@ -1,15 +1,15 @@
 //! Configuration of the Rapier layout: [`RapierLayoutConfig`], every field with its
 //! effect, its trade-off and its default.
 //!
-//! The configuration is grouped by what travels together, each group in its own file
-//! and read by one stage: which body kind a node gets (`body_kind`), how springs are
-//! solved and tuned ([`Springs`]), contacts ([`Contacts`]), what one call may simulate
-//! ([`FrameLimits`]), the solver ([`Solver`]), throws ([`Throw`]), rest detection
-//! ([`RestDetection`]), and the optional models: many-body repulsion ([`Repulsion`]),
-//! stress ([`StressModel`]), cooling ([`Cooling`]) and groups ([`GroupForce`]). The
-//! presets for laying graphs out are in `presets`. The adapter reads the configuration
-//! once per call and decides there what a change costs (a rebuild, new joints, or
-//! nothing).
+//! The configuration is grouped by what travels together, each group in its own file:
+//! how springs are solved and tuned ([`Springs`]), contacts ([`Contacts`]), what one
+//! call may simulate ([`FrameLimits`]), the solver ([`Solver`]), throws ([`Throw`]),
+//! rest detection ([`RestDetection`]), which body kind a node gets (`body_kind`), and
+//! the optional models: many-body repulsion ([`Repulsion`]), stress ([`StressModel`]),
+//! cooling ([`Cooling`]) and groups ([`GroupForce`]). The presets for laying graphs
+//! out are in `presets`. The adapter compares the configuration with the one the world
+//! was built with once per call and decides there what a change costs (a rebuild, new
+//! joints, or nothing: `adapter/reconfigure.rs`).
 
 use serde::{Deserialize, Serialize};
 
@@ -61,10 +61,13 @@ pub enum TopologyUpdate {
 /// [`force_directed_fast`](Self::force_directed_fast)).
 ///
 /// The first four fields are the contract's; the groups after them each gather what
-/// travels together and is read by one stage, with one cost of change: a changed
-/// [`contacts`](Self::contacts) group (or `material`, or `default_radius`) rebuilds the
-/// world, a changed `edge_joint` or [`springs`](Self::springs) group re-tunes the joints
-/// in place, and everything else takes effect at the next call.
+/// travels together. What a change between calls costs:
+/// - a new world (every body starts again at rest): `default_radius`, `material`, and a
+///   [`contacts`](Self::contacts) change that adds or removes rapier's colliders or
+///   contact events (`enabled`, `model`, `events`);
+/// - every joint replaced in place (bodies keep their motion): `edge_joint`, and
+///   [`springs`](Self::springs)' `model`, `weight` and `degree_exponent`;
+/// - nothing but the new values from the next call on: everything else.
 ///
 /// # Example
 /// ```

@@ -1,6 +1,6 @@
 //! The rest group ([`RestDetection`]): when the layout counts as at rest and which
 //! displacements it reports, read by the report stage (`adapter/sync_out.rs`,
-//! `adapter/rest.rs`).
+//! `adapter/heat/rest.rs`).
 
 use serde::{Deserialize, Serialize};
 

@@ -95,10 +95,11 @@ pub enum SpringModel {
     /// the timestep resolves stay stable, and a body still rests where its forces
     /// balance. Rapier then sees no joint between nodes: its islands are groups of nodes
     /// in contact, so a disturbance wakes only the nodes it reaches, and the spring
-    /// loop costs a few nanoseconds per edge. The price: springs and contacts are no
-    /// longer solved together (a spring pressing two disks into each other is resolved
-    /// over a few steps by the contact), and a spring's pull on its two ends comes one
-    /// substep late to rapier's solver. [`RapierSceneWorld::joint_count`](crate::RapierSceneWorld::joint_count)
+    /// loop is one cheap pass over the edges (`docs/performance.md` gives its time per
+    /// edge). The price: springs and contacts are no longer solved together (a spring
+    /// pressing two disks into each other is resolved over a few steps by the contact),
+    /// and a spring's pull on its two ends comes one substep late to rapier's solver.
+    /// [`RapierSceneWorld::joint_count`](crate::RapierSceneWorld::joint_count)
     /// still counts these springs;
     /// [`rapier_joint_count`](crate::RapierSceneWorld::rapier_joint_count) does not.
     Forces,

@@ -84,9 +84,10 @@ pub struct StressModel {
     /// Where the first world starts ([`StressStart`]). Default: [`StressStart::Global`].
     pub start: StressStart,
     /// Stress SGD passes of the global start after pivot MDS, for graphs of up to
-    /// 20,000 nodes; larger ones take fewer, in proportion (`30 × 20,000 / n`: 6 at 100,000), so a
-    /// 100,000-node graph shows its shape within seconds and the physics refines it. More
-    /// passes start closer to the stress minimum. Default: `30`.
+    /// 20,000 nodes; larger ones take fewer, in proportion (`30 × 20,000 / n`: 6 at
+    /// 100,000), so a large graph shows its shape soon (`docs/quality.md` times the first
+    /// call) and the physics refines it. More passes start closer to the stress minimum.
+    /// Default: `30`.
     pub start_passes: u32,
     /// The pivot terms are worked out every this many substeps and held in between as
     /// their first-order model (the force less their stiffness times the way moved since),

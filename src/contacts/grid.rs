@@ -61,9 +61,10 @@ pub(super) struct Grid {
 /// rows and columns number no more than a few times the bodies (a layout, not a
 /// scatter across the canvas), by two counting sorts, by column and then by row, each
 /// keeping the order it finds (so the slots stay ascending within a cell): linear in
-/// the bodies, where a comparison sort was a tenth of the contacts' time at 10,000
-/// bodies; returns the top row then (and `counts` holds where each row's bodies end).
-/// Otherwise by a comparison sort. Both give the one order there is.
+/// the bodies, where a comparison sort's O(n log n) was a visible share of the
+/// contacts' time (`docs/performance.md` gives it); returns the top row then (and
+/// `counts` holds where each row's bodies end). Otherwise by a comparison sort. Both
+/// give the one order there is.
 fn sort_cells(
     cells: &mut Vec<(u64, u32)>,
     scratch: &mut Vec<(u64, u32)>,

@@ -315,7 +315,7 @@ impl Collide {
         let slots = world.slot_count();
         let n = self.order.len();
         // Only the bodies in pairs: their new velocities and positions, read in slot
-        // order (rapier's bodies are in that order; at 100,000 bodies they outgrow the
+        // order (rapier's bodies are in that order; on a large graph they outgrow the
         // cache, and the grid's order would miss it on every body).
         if self.read.len() != n {
             // Marked by `resolve` (beside the warm start); a search for pairs since
@@ -391,8 +391,8 @@ impl Collide {
     }
 
     /// The new positions and velocities of the bodies in pairs: read by slot in runs
-    /// (rapier's bodies are in that order; at 100,000 bodies they outgrow the cache,
-    /// and the grid's order would miss it on every body), then copied to their local
+    /// (rapier's bodies are in that order; on a large graph they outgrow the cache, and
+    /// the grid's order would miss it on every body), then copied to their local
     /// indices in runs, both side by side under `parallel`.
     fn read_bodies_in_pairs(&mut self, view: SlotsView<'_>, slots: usize) {
         let local = &self.local[..slots.min(self.local.len())];

@@ -4,8 +4,9 @@
 //! solve the pairs are in `passes.rs`.
 //!
 //! Working in the grid's order rather than by world slot keeps a pair's two bodies close
-//! in memory (the same or a neighbouring cell): at 100,000 bodies the per-body arrays no
-//! longer fit a core's cache, and the passes run over every pair many times a substep.
+//! in memory (the same or a neighbouring cell): on a large graph the per-body arrays
+//! outgrow the cache (`docs/performance.md`, At scale, gives the sizes), and the passes
+//! run over every pair many times a substep.
 
 use std::hash::Hash;
 
@@ -31,10 +32,10 @@ fn comes_within(d: Vector2D<f32>, relative: Vector2D<f32>, within: f32) -> bool 
 }
 
 /// The most pairs a substep solves, per body and in all: far above what disks that
-/// cannot overlap much hold (a jammed 100,000-node graph holds 4.5 a body, a hot
-/// scatter's first contacts 16), and a bound on the memory and time a crowd denser than
-/// disks can be (everything at one point) would otherwise take: without it, contacts
-/// from the first frame of a 100,000-node graph took over 24 GB.
+/// cannot overlap much hold (jammed, or in a hot scatter's first contacts), and a bound
+/// on the memory and time a crowd denser than disks can be (everything at one point:
+/// O(n²) pairs) would otherwise take: without it, contacts from the first frame of a
+/// large graph ran out of memory (`docs/performance.md` gives the counts and sizes).
 pub(super) const PAIRS_PER_BODY: usize = 32;
 pub(super) const PAIRS_AT_LEAST: usize = 4_096;
 
@@ -198,8 +199,9 @@ impl Candidates<'_> {
         }
         // Two bodies moving fast relative to each other are a pair only if their
         // paths come close: the disc above grows with the square of the motion, and
-        // in a hot, dense crowd it held millions of pairs that pass far apart (a
-        // 100,000-node graph with contacts from the first frame ran out of memory).
+        // in a hot, dense crowd it held millions of pairs that pass far apart (a large
+        // graph with contacts from the first frame ran out of memory:
+        // `docs/performance.md`, beside `PAIRS_PER_BODY`).
         // Up to the usual motion the disc stands, as slack for what the solve
         // changes of the velocities.
         if moved > slack && !comes_within(d, relative, reach + margin + slack) {

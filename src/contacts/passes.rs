@@ -88,9 +88,9 @@ impl Lane<'_> {
     /// The lane's own pairs, [`STREAMS`] far-apart runs of them at once, a pair of each
     /// in turn: consecutive pairs of one run share a body, so each waits on the last
     /// one's velocity, while pairs of different runs (far apart in the grid's order)
-    /// rarely do, and the processor works on them side by side (a fifth less time a
-    /// pass on `random_n100000_e250000`). Pairs reaching past the lane's bodies are
-    /// skipped (`whole`: none do).
+    /// rarely do, and the processor works on them side by side, so a pass takes less
+    /// time (`docs/performance.md` gives the figure). Pairs reaching past the lane's
+    /// bodies are skipped (`whole`: none do).
     fn own_pairs<const PUSH: bool>(&mut self, rule: PassRule, whole: bool) {
         // NOTE: the slices as locals, so the loop keeps them in registers.
         let Self {
@@ -173,8 +173,9 @@ impl Lane<'_> {
 ///
 /// NOTE: written without branches on the pair's values (selects instead): whether a
 /// pair touches, pushes or holds is all but random from one pair to the next, and a
-/// mispredicted branch a pair cost more than its arithmetic (a third of a pass).
-/// [`push`] branches only on whether both bodies hold, which is rare.
+/// mispredicted branch a pair cost more than its arithmetic (`docs/performance.md`
+/// gives its share of a pass). [`push`] branches only on whether both bodies hold,
+/// which is rare.
 #[inline(always)]
 fn solve<const PUSH: bool>(
     pairs: &mut [Pair],

@@ -6,15 +6,16 @@
 //!
 //! The moving bodies' boxes are marked on a coarse grid over the box around them all
 //! ([`HotCells`]), and a body is in the region when its bounding box reaches a marked
-//! cell: a few dozen moving bodies scattered over a layout hold a few hundred bodies
-//! near them, where the one box around them all held a tenth of the layout.
+//! cell: a few dozen moving bodies scattered over a layout hold only the bodies near
+//! them, where the one box around them all held a large share of the layout
+//! (`docs/performance.md` gives the counts).
 
 use euclid::default::{Point2D, Vector2D};
 
 use super::Collide;
 
-/// Below this many bodies every body is taken: a full grid costs well under a
-/// millisecond there.
+/// Below this many bodies every body is taken: a full grid costs little there
+/// (`docs/performance.md` gives the time).
 const REGION_AT_LEAST: usize = 10_000;
 /// The region is used while at most one body in this many moves: under one in ten, the
 /// motion the grid's cells allow (that of nine bodies in ten) is none, so the full

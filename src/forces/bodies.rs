@@ -1,8 +1,8 @@
 //! What one substep reads of every body, by world slot: read from rapier once, then
 //! kept, and read again only for the bodies the world reports changed
-//! (`world/changes.rs`). On a settled 100,000-node graph a drag changes a few dozen
-//! bodies a step, and reading every body from rapier each substep was a fifth of the
-//! step.
+//! (`world/changes.rs`). On a large settled graph a drag changes a few dozen bodies a
+//! step, and reading every body from rapier each substep (O(n) for those few) was a
+//! large share of the step (`docs/performance.md` gives it).
 
 use std::hash::Hash;
 

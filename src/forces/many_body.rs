@@ -9,7 +9,7 @@ use euclid::default::{Point2D, Vector2D};
 
 use super::barnes_hut::ManyBody;
 use super::targets::NodeTargets;
-use super::{BodyForce, ForceContext, ForceSums, Lane, SpareFrame};
+use super::{BodyForce, ForceSums, Lane, SpareFrame};
 use crate::config::{RapierLayoutConfig, Repulsion};
 use crate::sanitize::finite_or;
 
@@ -48,16 +48,6 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for ManyBodyForce {
     /// From positions alone, so beside the springs.
     fn lane(&self) -> Lane {
         Lane::Spare
-    }
-
-    fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
-        let spare = SpareFrame {
-            config: frame.config,
-            points: frame.points,
-            pushed: frame.pushed,
-            heat: frame.heat,
-        };
-        BodyForce::<N>::apply_spare(self, &spare, out);
     }
 
     /// Writes every body's entry of `out.forces`: the first force of the registry.

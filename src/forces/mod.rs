@@ -22,7 +22,8 @@
 //! Jacobian), so springs stiffer than the step resolves stay stable and the body still
 //! comes to rest where its forces balance. The host's pulls act along one direction
 //! each and report their stiffness as a matrix (`targets.rs`), so the step slows a body
-//! only along the pull. A new force is one file here and one line in the registry.
+//! only along the pull. A new force is one file here and one entry in the registry
+//! (`simulate/registry.rs`: a field and its place in `each`).
 
 use euclid::default::{Point2D, Vector2D};
 
@@ -121,12 +122,14 @@ pub(crate) trait BodyForce<N>: Send + Sync {
     /// Default: nothing.
     fn prepare(&mut self, _frame: &ForceContext<'_, N>) {}
 
-    /// Adds this substep's force on every pushed body to `out` (by world slot; as long
-    /// as the world has bodies): the whole force, whatever its lane.
-    fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums);
+    /// A force of the springs' lane or in order: adds this substep's force on every
+    /// pushed body to `out` (by world slot; as long as the world has bodies). Default:
+    /// nothing (the spare lane's forces work in [`apply_spare`](Self::apply_spare)).
+    fn apply(&mut self, _frame: &ForceContext<'_, N>, _out: &mut ForceSums) {}
 
-    /// The spare lane's part of [`apply`](Self::apply), from positions alone. Default:
-    /// nothing (forces of the other lanes).
+    /// A force of the spare lane: works this substep's force out from positions alone,
+    /// into `out.forces` or into state of its own for [`finish`](Self::finish).
+    /// Default: nothing (the other lanes' forces work in [`apply`](Self::apply)).
     fn apply_spare(&mut self, _frame: &SpareFrame<'_>, _out: &mut ForceSums) {}
 
     /// After every lane: adds what the spare lane worked out into state of its own.

@@ -12,14 +12,14 @@
 //! rapier joints pull evenly themselves; this force then adds only the uneven part.
 //!
 //! Springs applied as forces also report their stiffness per body, so that
-//! `Forces::apply` can take an implicit step on it (see `forces/mod.rs`).
+//! the step can take an implicit step on it (`simulate/combine.rs`).
 
 use std::hash::Hash;
 
 use euclid::default::{Point2D, Vector2D};
 
 use super::targets::NodeTargets;
-use super::{BodyForce, ForceContext, ForceSums};
+use super::{BodyForce, ForceContext, ForceSums, Lane};
 use crate::config::{RapierLayoutConfig, SpringModel};
 use crate::parallel;
 use crate::sanitize::{finite_or, positive_or};
@@ -73,6 +73,12 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for SpringForce {
     fn is_active(&self, config: &RapierLayoutConfig, _: &NodeTargets) -> bool {
         config.springs.model == SpringModel::Forces
             || finite_or(config.springs.link_bias, 0.0) > 0.0
+    }
+
+    /// Reads the world and writes only the springs' sums: on the calling thread,
+    /// beside the spare lane.
+    fn lane(&self) -> Lane {
+        Lane::Springs
     }
 
     fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
@@ -158,8 +164,8 @@ impl SpringForce {
             });
         }
         // By their first end, so a pass reads that end's position and velocity in order
-        // (the other end's at random): on a 100,000-node graph the bodies' arrays no
-        // longer fit a core's cache. Two springs never join the same two bodies.
+        // (the other end's at random): on a large graph the bodies' arrays outgrow the
+        // cache. Two springs never join the same two bodies.
         self.links.sort_unstable_by_key(|link| (link.a, link.b));
         // Shares once every degree is counted.
         for link in &mut self.links {

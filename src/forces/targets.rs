@@ -97,9 +97,10 @@ pub(crate) fn pulled_bodies<'a, N: Clone + Eq + std::hash::Hash>(
 /// Adds to `out` the pull on the body in slot `s` of stiffness `k` and damping `c`,
 /// stretched by `stretch` and moving away at `speed` along the unit vector `axis`, as one
 /// backward Euler step: the force `(k stretch - (c + dt k) speed) axis`, and
-/// `(dt² k + dt c) axis axisᵀ` for the implicit division `Forces::apply` takes, which
-/// together give `(m + dt c + dt² k) Δv = dt (k stretch - (c + dt k) speed)`: stable and
-/// damped at any stiffness (far stiffer than the step resolves, where the edge springs
+/// `(dt² k + dt c) axis axisᵀ` for the implicit division the step takes
+/// (`simulate/combine.rs`), which together give
+/// `(m + dt c + dt² k) Δv = dt (k stretch - (c + dt k) speed)`: stable and damped at
+/// any stiffness (far stiffer than the step resolves, where the edge springs
 /// are capped), resting where the forces balance, and leaving motion across `axis` as
 /// free as without the pull.
 pub(crate) fn add_pull(

@@ -1,12 +1,13 @@
 //! Another thread of the pool kept awake through a substep (under `parallel`), so the
 //! substep's parallel parts do not wait for it to wake.
 //!
-//! A rayon thread with no work spins a little and then sleeps; asleep, it takes tens of
-//! microseconds to wake, about as long as each of the twenty or so parallel parts of a
-//! substep of 10,000 bodies, with serial work between them (`docs/performance.md`,
-//! the parallel feature, gives the figures). So [`with_pool_awake`] hands the pool one job that takes the pool's work as it
-//! comes ([`rayon::yield_now`]) and yields its core to the system between looks, until
-//! the substep ends. Which thread takes which part changes no result.
+//! A rayon thread with no work spins a little and then sleeps; asleep, it takes about as
+//! long to wake as one of the parallel parts of a large layout's substep takes, and such
+//! a substep holds many of them, with serial work between them (`docs/performance.md`,
+//! the parallel feature, gives the figures). So [`with_pool_awake`] hands the pool one
+//! job that takes the pool's work as it comes ([`rayon::yield_now`]) and yields its
+//! core to the system between looks, until the substep ends. Which thread takes which
+//! part changes no result.
 //!
 //! The job is detached (the substep does not wait for it to end), and it must never
 //! hold up the work below it on its thread's stack for long. So it leaves at once on a
@@ -26,8 +27,9 @@ use std::time::{Duration, Instant};
 /// From this many awake bodies on, [`with_pool_awake`] keeps a thread awake.
 const AWAKE_FROM: usize = 2_048;
 
-/// How long the thread kept awake waits without work before it leaves (longer than
-/// rapier's step between two parts at 10,000 bodies, about a millisecond).
+/// How long the thread kept awake waits without work before it leaves: longer than
+/// rapier's step, the longest serial work between two parts of a large layout's
+/// substep (`docs/performance.md` gives its time).
 const IDLE_LIMIT: Duration = Duration::from_millis(2);
 
 thread_local! {

@@ -165,7 +165,7 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             pushed: frame.pushed,
             heat,
         };
-        let (mut spare, mut rest): (Vec<_>, Vec<_>) = forces
+        let (mut spare, mut others): (Vec<_>, Vec<_>) = forces
             .iter_mut()
             .partition(|force| force.lane() == Lane::Spare);
         crate::parallel::beside(
@@ -175,14 +175,14 @@ impl<N: Clone + Eq + Hash> Forces<N> {
                 }
             },
             || {
-                for force in rest.iter_mut().filter(|f| f.lane() == Lane::Springs) {
+                for force in others.iter_mut().filter(|f| f.lane() == Lane::Springs) {
                     force.apply(&frame, &mut spring_sums);
                 }
             },
         );
         self.sums.forces = spare_sums.forces;
         (self.sums.springs, self.sums.resistance) = (spring_sums.springs, spring_sums.resistance);
-        for force in rest.iter_mut().filter(|f| f.lane() == Lane::InOrder) {
+        for force in others.iter_mut().filter(|f| f.lane() == Lane::InOrder) {
             force.apply(&frame, &mut self.sums);
         }
         // Last, in the registry's order: what the spare lane held (the stress terms), so
@@ -190,5 +190,31 @@ impl<N: Clone + Eq + Hash> Forces<N> {
         for force in forces.iter_mut() {
             force.finish(&mut self.sums);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_registry_runs_repulsion_and_stress_beside_the_springs_and_pulls_in_order() {
+        let mut registry = Registry::default();
+        let lanes = registry.each::<u32>().map(|force| force.lane());
+        // Many-body, springs, centre, position, radial, group, stress: the order the
+        // sums add up in, and where each runs.
+        assert_eq!(
+            lanes,
+            [
+                Lane::Spare,
+                Lane::Springs,
+                Lane::InOrder,
+                Lane::InOrder,
+                Lane::InOrder,
+                Lane::InOrder,
+                Lane::Spare
+            ],
+            "lanes {lanes:?}"
+        );
     }
 }

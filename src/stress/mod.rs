@@ -1,5 +1,5 @@
-//! The stress model, whole: its graph work apart from the physics (hop distances in
-//! `graph.rs`, the sparse model's terms and weights in `model.rs`, a global start
+//! The stress model, whole: its graph work apart from the physics (hop distances by the
+//! crate's breadth-first search, `graph.rs`, the sparse model's terms and weights in `model.rs`, a global start
 //! layout from them in `start.rs`: pivot MDS in `mds.rs`, stress SGD in `sgd.rs`,
 //! components packed in `pack.rs`), the new world's hop length and start turned to the
 //! host's held nodes (`placement.rs`), the force that keeps the terms in the physics

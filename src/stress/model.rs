@@ -115,7 +115,8 @@ impl SparseStress {
         let mut rng = crate::stress::sgd::Rng::new(0x2545_f491 ^ u64::from(nodes[0]));
         // Searches' results a block of pivots at a time, one column each, written into
         // the node-major table a block at a time: a column written straight into it
-        // would touch a cache line per node (a second a 100,000-node graph).
+        // would touch a cache line per node, from memory on a large graph
+        // (`docs/performance.md` gives the time).
         let len = nodes.len();
         let mut columns = vec![UNREACHED; COLUMN_BLOCK.min(share) * len];
         for k in 0..share {

@@ -86,7 +86,7 @@ pub(crate) fn stress_passes(
     }
     // A large graph: each pass visits the nodes in a new order, a block of them at a
     // time, the block's terms gathered and visited in a new order (memory holds one
-    // block's terms, not the 23 million of a 100,000-node graph), and takes a sample of
+    // block's terms, not the whole graph's, O(n × pivots)), and takes a sample of
     // each node's pivot terms, every `every`-th from a place drawn anew, each weighing
     // for those left out: a pass then costs about the budget.
     let every = pivot_terms.div_ceil(PIVOT_TERM_BUDGET).max(1);

@@ -85,7 +85,8 @@ pub(crate) fn global_start(
     }
     if n <= SMALL_GRAPH && model.full.iter().all(|&full| full) {
         // A small graph's descent ends in one of a few local minima, by the order its
-        // terms come in: the best of a few orders (each costs under a millisecond).
+        // terms come in: the best of a few orders (each cheap on a graph this small:
+        // `docs/performance.md` gives the time).
         let mut best: Option<(f64, Vec<[f32; 2]>)> = None;
         for seed in 0..SMALL_GRAPH_STARTS {
             let mut tried = xy.clone();

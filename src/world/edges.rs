@@ -10,6 +10,7 @@ use rapier2d::prelude::GenericJoint;
 use super::rapier_joint::{max_resolved_stiffness, rapier_joint, scaled_spring};
 use super::slot::{joint_key, JointSlot, SpringView};
 use super::RapierSceneWorld;
+use crate::graph::Graph;
 use crate::world::bindings::EdgeJointSpec;
 use crate::world::EdgeJoint;
 
@@ -237,6 +238,12 @@ impl<N: Clone + Eq + Hash> RapierSceneWorld<N> {
                 *self.index.get(&joint.b)? as usize,
             ))
         })
+    }
+
+    /// The joints as a graph of the world's slots ([`Graph`]), in joint order: what
+    /// the stress model measures hops on and a disturbance's heat spreads along.
+    pub(crate) fn joint_graph(&self) -> Graph {
+        Graph::new(self.slot_count(), self.joint_ends())
     }
 
     /// Every spring, rapier joint or forces, in joint order. Valid until

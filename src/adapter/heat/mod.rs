@@ -68,7 +68,7 @@ pub(in crate::adapter) struct HeatStage {
     pub(in crate::adapter) state: Heat,
     /// The convergence signal (`rest.rs`).
     pub(in crate::adapter) rest: Rest,
-    /// What this call disturbed, and the spread of its heat (`disturbance.rs`).
+    /// What this call disturbed, and the spread of its heat (`spread.rs`).
     pub(in crate::adapter) spread: Disturbances,
 }
 

@@ -123,7 +123,7 @@ impl Disturbances {
     /// The world's joints as a graph of its slots, built again when the world changed.
     fn index<N: Clone + Eq + Hash>(&mut self, world: &RapierSceneWorld<N>) {
         if self.version != Some(world.version()) {
-            self.graph = Graph::new(world.slot_count(), world.joint_ends());
+            self.graph = world.joint_graph();
             self.version = Some(world.version());
         }
     }

@@ -2,8 +2,8 @@
 //! graph distance from the nodes near it and from its component's pivots, by springs of
 //! rest length `hops × hop length` and stiffness `edge stiffness × weight` (`1 / hops²`
 //! for exact terms, `s / hops²` for a pivot standing for `s` nodes; `stress/model.rs`).
-//! The edges themselves are the world's springs (`springs.rs`). Each term pulls its own
-//! node only, and reports its stiffness, so `Forces::apply` takes an implicit step on it
+//! The edges themselves are the world's springs (`forces/springs.rs`). Each term pulls its own
+//! node only, and reports its stiffness, so the step (`simulate/combine.rs`) takes an implicit step on it
 //! as on the springs: stable at any stiffness. The terms scale with the world's spring
 //! scale (the heat), so the balance they rest at is the same at every heat.
 //!
@@ -21,7 +21,6 @@ use sums::{padded, pivot_pull};
 mod sums;
 use super::model::{Reach, SparseStress};
 use crate::config::RapierLayoutConfig;
-use crate::graph::Graph;
 use crate::parallel;
 use crate::world::RapierSceneWorld;
 
@@ -142,7 +141,7 @@ impl StressForce {
         if shape == self.shape {
             return;
         }
-        let graph = graph_of(world);
+        let graph = world.joint_graph();
         match self.shape.added_leaves(&shape) {
             Some(leaves) => {
                 let mut reach = Reach::new(graph.len());
@@ -353,12 +352,6 @@ impl Shape {
     }
 }
 
-/// The world's joint graph, by slot.
-pub(crate) fn graph_of<N: Clone + Eq + Hash>(world: &RapierSceneWorld<N>) -> Graph {
-    let edges: Vec<(usize, usize)> = world.joint_ends().collect();
-    Graph::new(world.slot_count(), edges.iter().copied())
-}
-
 impl<N: Clone + Eq + Hash> BodyForce<N> for StressForce {
     fn is_active(&self, config: &RapierLayoutConfig, _: &NodeTargets) -> bool {
         config.stress.is_some()
@@ -371,18 +364,6 @@ impl<N: Clone + Eq + Hash> BodyForce<N> for StressForce {
 
     fn prepare(&mut self, frame: &ForceContext<'_, N>) {
         self.step = self.step_for(frame);
-    }
-
-    fn apply(&mut self, frame: &ForceContext<'_, N>, out: &mut ForceSums) {
-        BodyForce::<N>::prepare(self, frame);
-        let spare = SpareFrame {
-            config: frame.config,
-            points: frame.points,
-            pushed: frame.pushed,
-            heat: frame.heat,
-        };
-        BodyForce::<N>::apply_spare(self, &spare, out);
-        BodyForce::<N>::finish(self, out);
     }
 
     fn apply_spare(&mut self, frame: &SpareFrame<'_>, _: &mut ForceSums) {

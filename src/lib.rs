@@ -72,7 +72,8 @@
 //!    neighbourhood it touched.
 //! 6. **Simulate** (`adapter/substeps.rs`, `simulate/`): per substep the drives, the
 //!    forces of `forces/` and the stress terms run from one registry, one rapier step,
-//!    the disk separation of `contacts/`; then the heat cools.
+//!    the disk separation of `contacts/`, the hard constraints and a flow's edges of
+//!    `constraints/`; then the heat cools.
 //! 7. **Sync out** (`adapter/sync_out.rs`): each free node's displacement.
 //! 8. **Rest** (`adapter/heat/rest.rs`): the convergence signal.
 //!
@@ -182,6 +183,7 @@
 
 mod adapter;
 pub mod config;
+mod constraints;
 mod contacts;
 mod forces;
 mod graph;
@@ -222,6 +224,7 @@ pub use world::RapierSceneWorld;
 /// the shipped scene files, the topology hash and, with feature `petgraph`, where a
 /// graph without positions starts.
 pub mod scene {
+    pub use crate::input::constraints::{Axis, Constraint};
     pub use crate::input::node_forces::{AxisLock, AxisTarget, NodeForces, RingTarget};
     #[cfg(feature = "petgraph")]
     pub use crate::input::petgraph::NodeStart;

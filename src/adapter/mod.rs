@@ -36,6 +36,7 @@ use std::hash::Hash;
 use euclid::default::Vector2D;
 
 use crate::config::RapierLayoutConfig;
+use crate::constraints::Compiled;
 use crate::input::layout::{DeltaMap, Layout, LayoutExtras};
 use crate::input::scene::{CanvasSceneInput, CanvasViewport};
 use crate::input::validation::{validate, LayoutError};
@@ -46,6 +47,7 @@ use crate::world::events::SceneEvent;
 use crate::world::RapierSceneWorld;
 
 mod built;
+mod constraints;
 mod drag;
 mod edits;
 mod heat;
@@ -65,12 +67,10 @@ use built::Built;
 use drag::Host;
 use heat::HeatStage;
 use matching::Matching;
-use node_forces::sync_node_forces;
 pub use resume::LayoutSnapshot;
 use skipped::Report;
 pub use state::RapierLayoutState;
 use substeps::{plan_frame, Substeps};
-use sync_in::HostInput;
 use sync_out::sync_out;
 
 /// A graph layout on a persistent Rapier2D world.
@@ -122,6 +122,9 @@ pub struct RapierLayout<N> {
     forces: Forces<N>,
     /// What the call left out (stage 4) and recovered (stage 6).
     report: Report<N>,
+    /// The hard constraints and a flow's edges by slot: stage 4 compiles them, 6 holds
+    /// them.
+    constraints: Compiled,
     /// [`RapierLayout::set_pool_awake`].
     pool_awake: bool,
 }
@@ -165,6 +168,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             heat: HeatStage::default(),
             forces: Forces::default(),
             report: Report::default(),
+            constraints: Compiled::default(),
             pool_awake: true,
         }
     }
@@ -514,6 +518,13 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let mut disturbed = known.is_none() && self.sync_topology(scene, extras);
         // 4. Sync in.
         disturbed |= self.sync_host(scene, extras, plan.frame_dt, known);
+        if let Some(world) = self.world.as_ref() {
+            let (flow, topology) = (self.config.flow, self.built.topology_hash);
+            if self.constraints.sync(flow, scene, extras, world, topology) {
+                disturbed = true;
+                self.heat.spread.touch_everything();
+            }
+        }
         if cold {
             // NOTE: after the sync, which flips pinned bodies and reads the forces.
             disturbed = self.settle_cold();
@@ -545,6 +556,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 world,
                 forces: &mut self.forces,
                 drives: &self.host.drives,
+                constraints: &self.constraints,
                 pool_awake: self.pool_awake,
             };
             substeps.run(&plan, gravity, heat);
@@ -557,6 +569,13 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let simulated = plan.simulated();
         self.heat
             .cool(&self.config, simulated, world, forces, in_flight);
+        if let Some(world) = self.world.as_mut().filter(|_| self.heat.state.halted) {
+            // The cold stop parted the last overlaps: the constraints have the last word.
+            self.constraints.settle(world, 64);
+        }
+        if let Some(world) = self.world.as_ref() {
+            self.constraints.check(world);
+        }
         // 7. Sync out.
         let report = sync_out(
             scene,
@@ -575,33 +594,5 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             self.world.as_mut(),
         );
         report.deltas
-    }
-
-    /// Stage 4: the host's pins, drags, releases and moves onto the bodies, then its
-    /// per-node forces. Returns whether the host disturbed the layout.
-    fn sync_host(
-        &mut self,
-        scene: &CanvasSceneInput<N>,
-        extras: &LayoutExtras<N>,
-        frame_dt: f32,
-        known: Option<&[usize]>,
-    ) -> bool {
-        let input = HostInput {
-            config: &self.config,
-            scene,
-            extras,
-            frame_dt,
-            known,
-        };
-        let kept = self.forces.kept_bodies();
-        let (world, spread) = (self.world.as_mut(), &mut self.heat.spread);
-        // NOTE: every drive comes with a disturbance from `sync_in`.
-        let mut disturbed = self
-            .host
-            .sync_in(&input, world, &self.matching, spread, kept);
-        let (world, spread) = (self.world.as_mut(), &mut self.heat.spread);
-        let targets = &mut self.forces.targets;
-        disturbed |= sync_node_forces(targets, scene, extras, &self.matching, world, spread);
-        disturbed
     }
 }

@@ -12,6 +12,8 @@ use rapier2d::prelude::{LockedAxes, Vector};
 
 use super::heat::Disturbances;
 use super::matching::{Matching, NO_SLOT};
+use super::sync_in::HostInput;
+use super::RapierLayout;
 use crate::forces::targets::NodeTargets;
 use crate::input::layout::LayoutExtras;
 use crate::input::node_forces::{AxisLock, NodeForces};
@@ -147,5 +149,35 @@ pub(super) fn hold_locked_axes<N: Clone + Eq + Hash>(
         let body = world.body_at_mut(s);
         body.set_translation(Vector::new(t.x, t.y), false);
         body.set_linvel(v, false);
+    }
+}
+
+impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    /// Stage 4: the host's pins, drags, releases and moves onto the bodies, then its
+    /// per-node forces. Returns whether the host disturbed the layout.
+    pub(super) fn sync_host(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+        frame_dt: f32,
+        known: Option<&[usize]>,
+    ) -> bool {
+        let input = HostInput {
+            config: &self.config,
+            scene,
+            extras,
+            frame_dt,
+            known,
+        };
+        let kept = self.forces.kept_bodies();
+        let (world, spread) = (self.world.as_mut(), &mut self.heat.spread);
+        // NOTE: every drive comes with a disturbance from `sync_in`.
+        let mut disturbed = self
+            .host
+            .sync_in(&input, world, &self.matching, spread, kept);
+        let (world, spread) = (self.world.as_mut(), &mut self.heat.spread);
+        let targets = &mut self.forces.targets;
+        disturbed |= sync_node_forces(targets, scene, extras, &self.matching, world, spread);
+        disturbed
     }
 }

@@ -106,7 +106,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     pub(super) fn note_skipped(&mut self, scene: &CanvasSceneInput<N>, extras: &LayoutExtras<N>) {
         let counted = self.matching.bad_nodes
             + self.matching.topology_problems
-            + self.forces.targets.problems;
+            + self.forces.targets.problems
+            + self.constraints.skipped;
         if counted > 0 || (scene.nodes.is_empty() && !scene.edges.is_empty()) {
             self.report.skipped = problems(scene, extras);
         } else {

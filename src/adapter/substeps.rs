@@ -13,6 +13,7 @@ use super::node_forces::hold_locked_axes;
 use super::state::RapierLayoutState;
 use crate::config::cooling::HeatLaw;
 use crate::config::{RapierLayoutConfig, SolverSettings};
+use crate::constraints::Compiled;
 use crate::profile::Stopwatch;
 use crate::sanitize::positive_or;
 use crate::simulate::Forces;
@@ -64,6 +65,8 @@ pub(super) struct Substeps<'a, N> {
     pub(super) forces: &'a mut Forces<N>,
     /// Kinematic bodies moving to the host's positions over the substeps.
     pub(super) drives: &'a [Drive],
+    /// The hard constraints, held after each step.
+    pub(super) constraints: &'a Compiled,
     /// [`RapierLayout::set_pool_awake`].
     pub(super) pool_awake: bool,
 }
@@ -76,6 +79,7 @@ impl<N: Clone + Eq + Hash> Substeps<'_, N> {
             world,
             forces,
             drives,
+            constraints,
             pool_awake,
         } = self;
         let solver = solver_settings(config);
@@ -124,6 +128,7 @@ impl<N: Clone + Eq + Hash> Substeps<'_, N> {
                 world.step(gravity);
                 watch.stop(&mut forces.profile, |p| &mut p.rapier);
                 forces.settle(world, plan.substep_dt);
+                constraints.project(world);
                 if !forces.targets.locks.is_empty() {
                     hold_locked_axes(world, &forces.targets.locks);
                 }

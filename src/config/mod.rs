@@ -18,6 +18,7 @@ use crate::world::bindings::PhysicsMaterial;
 mod body_kind;
 mod contacts;
 pub(crate) mod cooling;
+mod flow;
 mod frame;
 pub(crate) mod groups;
 mod presets;
@@ -31,6 +32,7 @@ mod throw;
 pub use crate::world::EdgeJoint;
 pub use body_kind::BodyKindPolicy;
 pub use contacts::{ContactModel, ContactSoftness, Contacts};
+pub use flow::Flow;
 pub use frame::FrameLimits;
 pub use groups::GroupForce;
 pub use repulsion::Repulsion;
@@ -150,6 +152,11 @@ pub struct RapierLayoutConfig {
     /// hold together and keep apart ([`GroupForce`]). Does nothing while no node has a
     /// group. Default: [`GroupForce::default`].
     pub groups: GroupForce,
+    /// Which way edges point ([`Flow`]), held as hard separations, or `None` for edges
+    /// that point anywhere. Costs a feedback arc set when the edges change and a few
+    /// projection passes over the edges per substep. Default: `None`
+    /// ([`with_flow`](Self::with_flow) sets it).
+    pub flow: Option<Flow>,
 }
 
 impl RapierLayoutConfig {
@@ -192,6 +199,7 @@ impl Default for RapierLayoutConfig {
             stress: None,
             cooling: None,
             groups: GroupForce::default(),
+            flow: None,
         }
     }
 }

@@ -5,6 +5,7 @@ use std::collections::{HashMap, HashSet};
 use euclid::default::Vector2D;
 use serde::{de::DeserializeOwned, Serialize};
 
+use crate::input::constraints::Constraint;
 use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasSceneInput, CanvasViewport};
 
@@ -41,6 +42,10 @@ pub struct LayoutExtras<N> {
     /// ([`NodeForces`]); nodes without an entry feel none of them. Ids not in the scene
     /// are ignored. Default: empty.
     pub forces: NodeMap<N, NodeForces>,
+    /// Hard constraints between nodes: separations along an axis and rows on one line
+    /// ([`Constraint`]), held every substep, not pulled toward. A dragged or pinned
+    /// node does not give way: its partners move. Default: empty.
+    pub constraints: Vec<Constraint<N>>,
 }
 
 impl<N> Default for LayoutExtras<N> {
@@ -49,6 +54,7 @@ impl<N> Default for LayoutExtras<N> {
             pinned: NodeSet::default(),
             dragging: NodeSet::default(),
             forces: NodeMap::default(),
+            constraints: Vec::new(),
         }
     }
 }

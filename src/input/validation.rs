@@ -96,6 +96,21 @@ pub enum LayoutError<N> {
         /// The value the host gave.
         value: f32,
     },
+    /// A constraint in [`LayoutExtras::constraints`](crate::LayoutExtras::constraints)
+    /// names a node that is not in the scene.
+    UnknownConstraintNode {
+        /// Index of the constraint in `extras.constraints`.
+        constraint: usize,
+        /// The node that is missing.
+        node: N,
+    },
+    /// A separation's gap is negative, NaN or infinite.
+    InvalidConstraintGap {
+        /// Index of the constraint in `extras.constraints`.
+        constraint: usize,
+        /// The gap the host gave.
+        gap: f32,
+    },
 }
 
 impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
@@ -149,6 +164,14 @@ impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
             LayoutError::InvalidNodeForce { node, part, value } => write!(
                 f,
                 "node {node:?} has an invalid {part} {value} in its forces (targets must be finite, radii and strengths finite and >= 0)"
+            ),
+            LayoutError::UnknownConstraintNode { constraint, node } => write!(
+                f,
+                "constraint {constraint} names node {node:?}, which is not in the scene"
+            ),
+            LayoutError::InvalidConstraintGap { constraint, gap } => write!(
+                f,
+                "constraint {constraint} has an invalid gap {gap} (must be finite and >= 0)"
             ),
         }
     }
@@ -280,6 +303,17 @@ fn collect<N: Clone + Eq + Hash>(
                     value,
                 });
             }
+        }
+    }
+    for (i, constraint) in extras.constraints.iter().enumerate() {
+        if let Some(node) = constraint.nodes().iter().find(|n| !first.contains_key(n)) {
+            report!(LayoutError::UnknownConstraintNode {
+                constraint: i,
+                node: node.clone(),
+            });
+        }
+        if let Some(gap) = constraint.gap().filter(|g| !(g.is_finite() && *g >= 0.0)) {
+            report!(LayoutError::InvalidConstraintGap { constraint: i, gap });
         }
     }
     found

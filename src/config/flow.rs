@@ -1,0 +1,90 @@
+//! Directed flow ([`Flow`]): every edge `source -> target` points one way, its target at
+//! least a gap beyond its source, held as a hard separation (`constraints/`).
+
+use serde::{Deserialize, Serialize};
+
+use crate::config::RapierLayoutConfig;
+use crate::input::constraints::Axis;
+
+/// Which way edges point, and how far a target rests beyond its source at least.
+///
+/// # Example
+/// ```
+/// use graph_canvas_layout::config::Flow;
+/// use graph_canvas_layout::RapierLayoutConfig;
+/// // Dependencies read top to bottom, a target at least 80 units below its source.
+/// let config = RapierLayoutConfig::stress().with_flow(Flow::down(80.0));
+/// assert_eq!(config.flow, Some(Flow::down(80.0)));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Flow {
+    axis: Axis,
+    /// Whether targets lie toward lower coordinates (up, left).
+    reversed: bool,
+    gap: f32,
+}
+
+impl Flow {
+    /// Targets below their sources (canvas y grows downward): `target.y >= source.y + gap`.
+    pub fn down(gap: f32) -> Self {
+        Self::along(Axis::Y, false, gap)
+    }
+
+    /// Targets above their sources: `target.y <= source.y - gap`.
+    pub fn up(gap: f32) -> Self {
+        Self::along(Axis::Y, true, gap)
+    }
+
+    /// Targets right of their sources: `target.x >= source.x + gap`.
+    pub fn right(gap: f32) -> Self {
+        Self::along(Axis::X, false, gap)
+    }
+
+    /// Targets left of their sources: `target.x <= source.x - gap`.
+    pub fn left(gap: f32) -> Self {
+        Self::along(Axis::X, true, gap)
+    }
+
+    fn along(axis: Axis, reversed: bool, gap: f32) -> Self {
+        Self {
+            axis,
+            reversed,
+            gap,
+        }
+    }
+
+    /// The axis edges point along.
+    pub fn axis(&self) -> Axis {
+        self.axis
+    }
+
+    /// The least distance from a source to its target along the axis. Not finite or
+    /// negative counts as 0.
+    pub fn gap(&self) -> f32 {
+        if self.gap.is_finite() {
+            self.gap.max(0.0)
+        } else {
+            0.0
+        }
+    }
+
+    /// `(first, second)` of an edge `source -> target` as a separation: the second at
+    /// least [`gap`](Self::gap) beyond the first along the axis.
+    pub(crate) fn order<T>(&self, source: T, target: T) -> (T, T) {
+        if self.reversed {
+            (target, source)
+        } else {
+            (source, target)
+        }
+    }
+}
+
+impl RapierLayoutConfig {
+    /// This configuration with its edges pointing along `flow`.
+    pub fn with_flow(self, flow: Flow) -> Self {
+        Self {
+            flow: Some(flow),
+            ..self
+        }
+    }
+}

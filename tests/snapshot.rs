@@ -219,9 +219,8 @@ fn a_damaged_snapshot_is_refused_and_changes_nothing() {
     // Another format.
     let mut other = json.clone();
     other["format"] = serde_json::json!(99);
-    let snapshot: LayoutSnapshot<u32> = serde_json::from_value(other).unwrap();
     assert_eq!(
-        target.layout.restore(snapshot),
+        restore_json(&mut target, other),
         Err(SnapshotError::Format {
             found: 99,
             expected: LayoutSnapshot::<u32>::FORMAT
@@ -232,9 +231,8 @@ fn a_damaged_snapshot_is_refused_and_changes_nothing() {
     let mut old = json.clone();
     old["format"] = serde_json::json!(1);
     old["world"].as_object_mut().unwrap().remove("seals");
-    let snapshot: LayoutSnapshot<u32> = serde_json::from_value(old).unwrap();
     assert_eq!(
-        target.layout.restore(snapshot),
+        restore_json(&mut target, old),
         Err(SnapshotError::Format {
             found: 1,
             expected: 3
@@ -251,9 +249,8 @@ fn a_damaged_snapshot_is_refused_and_changes_nothing() {
             "collisions": true, "max_substeps": 16, "throw_window": 0.05, "link_bias": 1.0,
         });
     }
-    let snapshot: LayoutSnapshot<u32> = serde_json::from_value(flat).unwrap();
     assert_eq!(
-        target.layout.restore(snapshot),
+        restore_json(&mut target, flat),
         Err(SnapshotError::Format {
             found: 2,
             expected: 3
@@ -271,4 +268,10 @@ fn a_damaged_snapshot_is_refused_and_changes_nothing() {
     let world = target.layout.world().unwrap();
     assert_eq!((world.body_count(), world.contains_node(&1)), (1, true));
     assert_eq!(target.layout.config, RapierLayoutConfig::default());
+}
+
+/// Reads `value` as a snapshot (it must read) and restores `host`'s layout from it.
+fn restore_json(host: &mut Host<u32>, value: serde_json::Value) -> Result<(), SnapshotError> {
+    let snapshot: LayoutSnapshot<u32> = serde_json::from_value(value).unwrap();
+    host.layout.restore(snapshot)
 }

@@ -99,7 +99,7 @@ impl Compiled {
             self.exempt.clear();
             self.exempt_for = None;
         }
-        before != (self.separations.clone(), self.rows.clone())
+        before.0 != self.separations || before.1 != self.rows
     }
 
     /// After the call's substeps: which constraints rest more than [`HELD_WITHIN`] from

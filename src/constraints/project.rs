@@ -103,15 +103,11 @@ fn separate<N: Clone + Eq + Hash>(world: &mut RapierSceneWorld<N>, c: Separation
     if w <= 0.0 {
         return;
     }
-    let coordinate = |world: &RapierSceneWorld<N>, s: usize| {
-        let t = world.body_at(s).translation();
-        along(c.axis, t.x, t.y)
-    };
     let speed = |world: &RapierSceneWorld<N>, s: usize| {
         let v = world.body_at(s).linvel();
         along(c.axis, v.x, v.y)
     };
-    let short = c.gap - (coordinate(world, b) - coordinate(world, a));
+    let short = c.shortfall(world);
     if short < 0.0 {
         return;
     }

@@ -48,6 +48,11 @@
 //! - A free node the host moved itself (undo, snap) is put where the host put it.
 //! - [`RapierLayout::try_step`] rejects bad input with a [`LayoutError`] and changes
 //!   nothing; [`Layout::step`] leaves bad elements out and never panics.
+//! - A [`Flow`] ([`RapierLayoutConfig::with_flow`]) and
+//!   [`LayoutExtras::constraints`] are hard: a flow's edges hold after every substep
+//!   wherever the bodies allow (a pinned or dragged node does not give way), the host's
+//!   separations and rows within a few substeps, every one within a unit at rest; and
+//!   [`RapierLayout::violated_constraints`] names what could not hold.
 //! - [`LayoutWorker`](crate::worker::LayoutWorker) steps a layout on a thread of its own for graphs whose step would
 //!   cost the UI thread its frame rate: the host sends what changes and reads the
 //!   newest positions without waiting.
@@ -156,6 +161,14 @@
 //! preset cools to rest, then stops stepping the world until the next drag, release,
 //! host move or edit, which heats only the nodes near it.
 //!
+//! **Edges pointing one way, nodes in a row?** [`RapierLayoutConfig::with_flow`] with
+//! [`Flow::down`](crate::config::Flow::down) (or up, left, right) for a directed graph;
+//! [`Constraint::separation`](crate::scene::Constraint::separation) and
+//! [`Constraint::align`](crate::scene::Constraint::align) in
+//! [`LayoutExtras::constraints`] for the host's own order and lines. They are hard, not
+//! pulls: per-node forces ([`NodeForces`]) are the soft kind.
+//! `docs/flow.md` compares a flow with Graphviz `dot`.
+//!
 //! **Which accuracy level?** Independent of the preset: [`Accuracy::Balanced`](crate::config::Accuracy::Balanced) (default)
 //! sits at the knee of the measured cost/error curve. [`Accuracy::Fast`](crate::config::Accuracy::Fast) is cheaper on
 //! sparse graphs but slower in dense contact piles; [`Accuracy::Precise`](crate::config::Accuracy::Precise) costs several
@@ -207,7 +220,8 @@ pub use rapier2d;
 // The contract (`Layout`, the scene, the Rapier layout and its world's types) and the
 // errors and snapshots a host meets; the rest lives in the modules below.
 pub use adapter::{LayoutSnapshot, RapierLayout, RapierLayoutState};
-pub use config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig};
+pub use config::{BodyKindPolicy, EdgeJoint, Flow, RapierLayoutConfig};
+pub use input::constraints::{Axis, Constraint};
 pub use input::layout::{DeltaMap, Layout, LayoutExtras, NodeMap, NodeSet};
 pub use input::node_forces::NodeForces;
 pub use input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
@@ -241,9 +255,9 @@ pub mod scene {
 pub mod prelude {
     pub use crate::Layout as _;
     pub use crate::{
-        CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, DeltaMap, LayoutError,
-        LayoutExtras, LayoutSnapshot, NodeForces, NodeShape, RapierLayout, RapierLayoutConfig,
-        RapierLayoutState, SnapshotError,
+        Axis, CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, Constraint, DeltaMap, Flow,
+        LayoutError, LayoutExtras, LayoutSnapshot, NodeForces, NodeShape, RapierLayout,
+        RapierLayoutConfig, RapierLayoutState, SnapshotError,
     };
 }
 

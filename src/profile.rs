@@ -32,7 +32,8 @@ use std::time::{Duration, Instant};
 /// }
 /// let profile = layout.profile().expect("profiling is on");
 /// assert_eq!(profile.calls, 10);
-/// assert!(profile.forces + profile.contacts + profile.rapier <= profile.total);
+/// let stages = profile.forces + profile.contacts + profile.rapier + profile.constraints;
+/// assert!(stages <= profile.total);
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
@@ -53,6 +54,10 @@ pub struct StepProfile {
     /// rapier's own steps (integration, and its contacts and joints where the
     /// configuration leaves them to rapier).
     pub rapier: Duration,
+    /// The hard constraints (a [`Flow`](crate::config::Flow)'s edges and
+    /// [`LayoutExtras::constraints`](crate::LayoutExtras::constraints)): the projection
+    /// after each substep, and the halt's last settling.
+    pub constraints: Duration,
 }
 
 /// A stage's start, when profiling is on.

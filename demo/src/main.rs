@@ -19,7 +19,7 @@ use std::time::Instant;
 use engine::{Engine, WORKER_FROM};
 
 use eframe::egui;
-use graph_canvas_layout::config::Accuracy;
+use graph_canvas_layout::config::{Accuracy, Flow};
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::scene::SceneFile;
 use graph_canvas_layout::{
@@ -30,6 +30,8 @@ use graph_canvas_layout::{
 /// A label box's width per character and height, in world units.
 const CHAR_WIDTH: f32 = 7.0;
 const BOX_HEIGHT: f32 = 20.0;
+/// The least drop from an edge's source to its target under the flow toggle.
+const FLOW_GAP: f32 = 60.0;
 
 struct Demo {
     scene: CanvasSceneInput<u32>,
@@ -161,10 +163,10 @@ impl Demo {
             ui.radio_value(&mut self.preset, preset, preset.name());
         }
         if self.preset != before {
-            // The preset's accuracy comes with it; the chosen joint stays.
-            let keep = config.edge_joint;
+            // The preset's accuracy comes with it; the chosen joint and flow stay.
+            let keep = (config.edge_joint, config.flow);
             config = self.preset.config();
-            config.edge_joint = keep;
+            (config.edge_joint, config.flow) = keep;
         }
         ui.label("accuracy");
         let preset_accuracy = self.preset.config().solver.accuracy;
@@ -174,6 +176,13 @@ impl Demo {
         ui.label("edge joint");
         for (name, joint) in joint_choices(config.edge_joint) {
             ui.radio_value(&mut config.edge_joint, joint, name);
+        }
+        let mut flowing = config.flow.is_some();
+        if ui
+            .checkbox(&mut flowing, "flow: every edge points down")
+            .changed()
+        {
+            config.flow = flowing.then(|| Flow::down(FLOW_GAP));
         }
         if config != *self.engine.config() {
             self.engine.set_config(config);
@@ -276,12 +285,19 @@ impl Demo {
             .iter()
             .map(|n| (n.id, n.position))
             .collect();
+        // Under a flow, edges are arrows from source to target, ending at the target's
+        // outline.
+        let arrows = self.engine.config().flow.is_some();
+        let stroke = egui::Stroke::new(1.0, egui::Color32::from_gray(170));
         for e in &self.scene.edges {
             if let (Some(a), Some(b)) = (position.get(&e.source), position.get(&e.target)) {
-                painter.line_segment(
-                    [self.to_screen(rect, *a), self.to_screen(rect, *b)],
-                    egui::Stroke::new(1.0, egui::Color32::from_gray(170)),
-                );
+                let (from, to) = (self.to_screen(rect, *a), self.to_screen(rect, *b));
+                let (v, cut) = (to - from, 16.0 * self.zoom);
+                if arrows && v.length() > 2.0 * cut {
+                    painter.arrow(from, v * ((v.length() - cut) / v.length()), stroke);
+                } else {
+                    painter.line_segment([from, to], stroke);
+                }
             }
         }
         for n in &self.scene.nodes {

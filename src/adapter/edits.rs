@@ -11,11 +11,12 @@ use euclid::default::{Point2D, Vector2D};
 use super::seating::Seating;
 use super::RapierLayout;
 use crate::config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, SpringModel, TopologyUpdate};
+use crate::constraints::Compiled;
 use crate::input::layout::{IdHasher, LayoutExtras};
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::input::topology::Topology;
 use crate::input::validation::node_is_valid;
-use crate::stress::{start_world, WorldOrigin};
+use crate::stress::{start_world, StartConstraints, WorldOrigin};
 use crate::world::bindings::{ColliderSpec, NodeAvatarBinding, SceneBodyKind};
 use crate::world::nodes::body_mass;
 use crate::world::rapier_joint::scaled_spring;
@@ -86,10 +87,25 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             first: self.built.rebuilds == 0,
             cold_start: self.built.cold_start,
         };
-        let model = self
-            .config
-            .stress
-            .map(|stress| start_world(stress, origin, &mut world, scene, topology, extras));
+        // The start holds the constraints as it descends.
+        let mut held = Compiled::default();
+        held.sync(self.config.flow, scene, extras, &world, (u64::MAX, 0));
+        let any = !held.is_empty();
+        let passes = self.config.solver.constraint_passes();
+        let mut hold = |xy: &mut [[f32; 2]], unit: f32| held.project_points(xy, unit, passes);
+        let model = self.config.stress.map(|stress| {
+            let constraints = StartConstraints {
+                hold: &mut hold,
+                any,
+            };
+            start_world(
+                stress,
+                origin,
+                &mut world,
+                (scene, topology, extras),
+                constraints,
+            )
+        });
         let degrees = topology.degrees(scene.nodes.len());
         insert_joints(
             &mut world,

@@ -124,7 +124,7 @@ pub struct RapierLayout<N> {
     report: Report<N>,
     /// The hard constraints and a flow's edges by slot: stage 4 compiles them, 6 holds
     /// them.
-    constraints: Compiled,
+    constraints: Compiled<N>,
     /// [`RapierLayout::set_pool_awake`].
     pool_awake: bool,
 }
@@ -519,10 +519,16 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         // 4. Sync in.
         disturbed |= self.sync_host(scene, extras, plan.frame_dt, known);
         if let Some(world) = self.world.as_ref() {
-            let (flow, topology) = (self.config.flow, self.built.topology_hash);
-            if self.constraints.sync(flow, scene, extras, world, topology) {
+            let generation = (self.built.rebuilds, world.version());
+            let flow = self.config.flow;
+            if let Some(edit) = self
+                .constraints
+                .sync(flow, scene, extras, world, generation)
+            {
                 disturbed = true;
-                self.heat.spread.touch_everything();
+                self.heat
+                    .spread
+                    .touch_constraints(&edit, world.slot_count());
             }
         }
         if cold {
@@ -556,7 +562,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 world,
                 forces: &mut self.forces,
                 drives: &self.host.drives,
-                constraints: &self.constraints,
+                constraints: &mut self.constraints,
                 pool_awake: self.pool_awake,
             };
             substeps.run(&plan, gravity, heat);
@@ -569,13 +575,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let simulated = plan.simulated();
         self.heat
             .cool(&self.config, simulated, world, forces, in_flight);
-        if let Some(world) = self.world.as_mut().filter(|_| self.heat.state.halted) {
-            // The cold stop parted the last overlaps: the constraints have the last word.
-            self.constraints.settle(world, 64);
-        }
-        if let Some(world) = self.world.as_ref() {
-            self.constraints.check(world);
-        }
+        self.hold_constraints();
         // 7. Sync out.
         let report = sync_out(
             scene,

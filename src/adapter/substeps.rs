@@ -66,7 +66,7 @@ pub(super) struct Substeps<'a, N> {
     /// Kinematic bodies moving to the host's positions over the substeps.
     pub(super) drives: &'a [Drive],
     /// The hard constraints, held after each step.
-    pub(super) constraints: &'a Compiled,
+    pub(super) constraints: &'a mut Compiled<N>,
     /// [`RapierLayout::set_pool_awake`].
     pub(super) pool_awake: bool,
 }
@@ -83,6 +83,7 @@ impl<N: Clone + Eq + Hash> Substeps<'_, N> {
             pool_awake,
         } = self;
         let solver = solver_settings(config);
+        let passes = config.solver.constraint_passes();
         let length_unit = positive_or(config.solver.length_unit, 1.0);
         let params = world.integration_parameters_mut();
         params.dt = plan.substep_dt;
@@ -128,7 +129,9 @@ impl<N: Clone + Eq + Hash> Substeps<'_, N> {
                 world.step(gravity);
                 watch.stop(&mut forces.profile, |p| &mut p.rapier);
                 forces.settle(world, plan.substep_dt);
-                constraints.project(world);
+                let watch = Stopwatch::start(&forces.profile);
+                constraints.project(world, passes, &forces.targets.locks);
+                watch.stop(&mut forces.profile, |p| &mut p.constraints);
                 if !forces.targets.locks.is_empty() {
                     hold_locked_axes(world, &forces.targets.locks);
                 }

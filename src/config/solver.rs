@@ -129,6 +129,21 @@ pub struct Solver {
     /// A throw faster than this flies at the cap. Default: `40_000.0` (rapier's own
     /// 400 lengths/s at `length_unit` 100).
     pub max_speed: f32,
+    /// Gauss–Seidel passes over the hard constraints (a [`Flow`](crate::config::Flow)'s
+    /// edges, [`LayoutExtras::constraints`](crate::LayoutExtras::constraints)) after
+    /// each substep. Each pass costs one visit to every constraint; fewer passes leave a
+    /// long chain of constraints short for more frames while the layout moves (at rest
+    /// every constraint holds within a unit whatever this is: the halt projects until it
+    /// does). `docs/flow.md` measures the trade. Taken as 1 to 64. Costs nothing
+    /// without constraints. Default: `8`.
+    pub constraint_passes: u32,
+}
+
+impl Solver {
+    /// [`constraint_passes`](Self::constraint_passes), from 1 to 64.
+    pub(crate) fn constraint_passes(&self) -> usize {
+        self.constraint_passes.clamp(1, 64) as usize
+    }
 }
 
 impl Default for Solver {
@@ -137,6 +152,7 @@ impl Default for Solver {
             accuracy: Accuracy::Balanced,
             length_unit: 100.0,
             max_speed: 40_000.0,
+            constraint_passes: 8,
         }
     }
 }

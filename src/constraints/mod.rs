@@ -1,15 +1,19 @@
 //! Hard constraints held every substep beside the forces: the host's separations and
-//! rows ([`Constraint`]) and a directed flow's edges ([`Flow`]), compiled to world slots
-//! once per call (`compile.rs`) and projected after each rapier step (`project.rs`):
-//! a violated separation moves its two bodies apart along its axis in inverse
-//! proportion to their masses and takes out their closing speed, a row moves its bodies
-//! onto one line. A body that is not dynamic (pinned, dragged, frozen) does not give way:
-//! its partners move. Gauss–Seidel passes, as the disk separation's contacts, so a chain
-//! of constraints settles over a few substeps and holds at rest.
+//! rows ([`Constraint`](crate::scene::Constraint)) and a directed flow's edges
+//! ([`Flow`](crate::config::Flow)), compiled to world slots once per call
+//! (`compile.rs`, the flow's edges in `flow.rs`) and projected after each rapier step
+//! (`project.rs`): a violated separation moves its two bodies apart along its axis in
+//! inverse proportion to their masses and takes out their closing speed, a row moves its
+//! bodies onto one line. A body that is not dynamic (pinned, dragged, frozen) does not
+//! give way: its partners move. Gauss–Seidel passes, as the disk separation's contacts,
+//! so a chain of constraints settles over a few substeps and holds at rest.
 
 use crate::input::constraints::Axis;
 
 mod compile;
+mod flow;
+mod local;
+mod order;
 mod project;
 
 pub(crate) use compile::Compiled;
@@ -30,13 +34,43 @@ pub(crate) struct Row {
     pub(crate) slots: Vec<u32>,
 }
 
-/// Projection passes over every constraint per substep.
-const PASSES: usize = 8;
+/// How far from holding a constraint may rest and still count as held (world units).
+pub(crate) const HELD_WITHIN: f32 = 1.0;
 
-/// The coordinate of `v` on `axis`.
-fn along(axis: Axis, x: f32, y: f32) -> f32 {
+/// The index of `axis` in a point's `[x, y]`.
+fn index(axis: Axis) -> usize {
     match axis {
-        Axis::X => x,
-        Axis::Y => y,
+        Axis::X => 0,
+        Axis::Y => 1,
+    }
+}
+
+/// Adds to `edit` the slots of the separations in one list and not the other.
+fn changed_slots(before: &[Separation], after: &[Separation], edit: &mut Vec<u32>) {
+    let key = |c: &Separation| (c.first, c.second, c.axis as u8, c.gap.to_bits());
+    let sorted = |list: &[Separation]| {
+        let mut keys: Vec<_> = list.iter().map(key).collect();
+        keys.sort_unstable();
+        keys
+    };
+    let (before, after) = (sorted(before), sorted(after));
+    let (mut i, mut j) = (0, 0);
+    while i < before.len() || j < after.len() {
+        match (before.get(i), after.get(j)) {
+            (Some(a), Some(b)) if a == b => (i, j) = (i + 1, j + 1),
+            (Some(a), Some(b)) if a < b => {
+                edit.extend([a.0, a.1]);
+                i += 1;
+            }
+            (Some(_), Some(b)) | (None, Some(b)) => {
+                edit.extend([b.0, b.1]);
+                j += 1;
+            }
+            (Some(a), None) => {
+                edit.extend([a.0, a.1]);
+                i += 1;
+            }
+            (None, None) => break,
+        }
     }
 }

@@ -1,184 +1,106 @@
 //! The projection after each rapier step: Gauss–Seidel passes over the separations and
-//! rows, moving dynamic bodies only.
+//! rows on the constrained bodies' own arrays (`local.rs`), moving dynamic bodies only;
+//! and how far a constraint is from holding, read from the world.
 
 use std::hash::Hash;
 
-use rapier2d::prelude::Vector;
-
-use super::{along, Compiled, Row, Separation, PASSES};
-use crate::input::constraints::Axis;
+use super::{index, Compiled, Row, Separation, HELD_WITHIN};
+use crate::input::node_forces::AxisLock;
 use crate::world::RapierSceneWorld;
 
-impl Compiled {
-    /// Projects until every constraint holds within a tenth of
-    /// [`HELD_WITHIN`](super::compile::HELD_WITHIN), or `rounds` times [`PASSES`]
-    /// passes: what the world rests with when it halts.
-    pub(crate) fn settle<N: Clone + Eq + Hash>(
-        &self,
-        world: &mut RapierSceneWorld<N>,
-        rounds: usize,
-    ) {
-        for _ in 0..rounds {
-            let worst = self
-                .separations
-                .iter()
-                .map(|c| c.shortfall(world))
-                .chain(self.rows.iter().map(|r| r.spread(world) / 2.0))
-                .fold(0.0_f32, f32::max);
-            if worst <= 0.1 * super::compile::HELD_WITHIN {
-                return;
-            }
-            self.project(world);
-        }
-    }
+/// A settling round that takes less than this share off the worst shortfall ends the
+/// settling: what is left cannot hold (conflicting constraints).
+const STALLED: f32 = 0.01;
 
-    /// Projects every constraint onto `world`'s bodies, [`PASSES`] times.
-    pub(crate) fn project<N: Clone + Eq + Hash>(&self, world: &mut RapierSceneWorld<N>) {
-        if self.separations.is_empty() && self.rows.is_empty() {
+impl<N: Clone + Eq + Hash> Compiled<N> {
+    /// Projects every constraint onto `world`'s bodies: `passes` passes, the sweep, the
+    /// rows. A body's axis held by one of `locks` does not give way along it.
+    pub(crate) fn project(
+        &mut self,
+        world: &mut RapierSceneWorld<N>,
+        passes: usize,
+        locks: &[(u32, AxisLock, f32)],
+    ) {
+        if self.local.is_empty() {
             return;
         }
-        for _ in 0..PASSES {
-            for &separation in &self.separations {
-                separate(world, separation);
+        self.local.gather(world, locks);
+        self.round(passes);
+        self.local.scatter(world);
+    }
+
+    /// `passes` passes, the sweep, then the rows on their lines.
+    fn round(&mut self, passes: usize) {
+        for k in 0..passes {
+            self.local.pass(k % 2 == 1);
+        }
+        self.local.sweep();
+        self.local.line_up_rows();
+    }
+
+    /// Projects every constraint onto `points` (by slot, `unit` world units each; a
+    /// start layout's positions before there are bodies to move), `passes` times, every
+    /// body free to move.
+    pub(crate) fn project_points(&mut self, points: &mut [[f32; 2]], unit: f32, passes: usize) {
+        if self.local.is_empty() || !(unit.is_finite() && unit > 0.0) {
+            return;
+        }
+        self.local.gather_points(points, unit);
+        self.round(passes);
+        self.local.scatter_points(points, unit);
+    }
+
+    /// Projects until every constraint the bodies can move holds within a tenth of
+    /// [`HELD_WITHIN`], until a round stops bringing the worst nearer (a conflict), or
+    /// `rounds` rounds: what the world rests with when it halts.
+    pub(crate) fn settle(
+        &mut self,
+        world: &mut RapierSceneWorld<N>,
+        (passes, rounds): (usize, usize),
+        locks: &[(u32, AxisLock, f32)],
+    ) {
+        if self.local.is_empty() {
+            return;
+        }
+        self.local.gather(world, locks);
+        let mut last = f32::INFINITY;
+        for _ in 0..rounds {
+            let worst = self.local.worst();
+            if worst <= 0.1 * HELD_WITHIN || worst > (1.0 - STALLED) * last {
+                break;
             }
-            for row in &self.rows {
-                line_up(world, row);
-            }
+            last = worst;
+            self.round(passes);
         }
+        self.local.scatter(world);
     }
 }
 
-/// A body's inverse mass, 0 for one that does not give way.
-fn inverse_mass<N: Clone + Eq + Hash>(world: &RapierSceneWorld<N>, s: usize) -> f32 {
-    if world.body_at(s).is_dynamic() {
-        let m = world.mass_at(s);
-        if m > 0.0 && m.is_finite() {
-            1.0 / m
-        } else {
-            0.0
-        }
-    } else {
-        0.0
-    }
-}
-
-/// Moves the body in `s` by `by` along `axis` and adds `dv` to its speed along it.
-fn shift<N: Clone + Eq + Hash>(
-    world: &mut RapierSceneWorld<N>,
-    s: usize,
-    axis: Axis,
-    by: f32,
-    dv: f32,
-) {
-    if by == 0.0 && dv == 0.0 {
-        return;
-    }
-    let body = world.body_at_mut(s);
-    let (mut p, mut v) = (body.translation(), body.linvel());
-    match axis {
-        Axis::X => {
-            p.x += by;
-            v.x += dv;
-        }
-        Axis::Y => {
-            p.y += by;
-            v.y += dv;
-        }
-    }
-    if p.is_finite() && v.is_finite() {
-        body.set_translation(Vector::new(p.x, p.y), true);
-        body.set_linvel(Vector::new(v.x, v.y), true);
-    }
-}
-
-/// Holds one separation: parts its bodies when closer than the gap, and takes out the
-/// speed that closes them further.
-fn separate<N: Clone + Eq + Hash>(world: &mut RapierSceneWorld<N>, c: Separation) {
-    let (a, b) = (c.first as usize, c.second as usize);
-    if a == b {
-        return;
-    }
-    let (wa, wb) = (inverse_mass(world, a), inverse_mass(world, b));
-    let w = wa + wb;
-    if w <= 0.0 {
-        return;
-    }
-    let speed = |world: &RapierSceneWorld<N>, s: usize| {
-        let v = world.body_at(s).linvel();
-        along(c.axis, v.x, v.y)
-    };
-    let short = c.shortfall(world);
-    if short < 0.0 {
-        return;
-    }
-    let closing = (speed(world, a) - speed(world, b)).max(0.0);
-    shift(world, a, c.axis, -short * wa / w, -closing * wa / w);
-    shift(world, b, c.axis, short * wb / w, closing * wb / w);
-}
-
-/// Puts a row's bodies on one line: the line of its immovable bodies (their mean), or
-/// else their mass-weighted mean, each at that line's speed along the axis.
-fn line_up<N: Clone + Eq + Hash>(world: &mut RapierSceneWorld<N>, row: &Row) {
-    let (mut fixed, mut fixed_count) = (0.0_f64, 0_u32);
-    let (mut sum, mut speed, mut weight) = (0.0_f64, 0.0_f64, 0.0_f64);
-    for &s in &row.slots {
-        let s = s as usize;
-        let t = world.body_at(s).translation();
-        let x = f64::from(along(row.axis, t.x, t.y));
-        let w = f64::from(inverse_mass(world, s));
-        if w == 0.0 {
-            fixed += x;
-            fixed_count += 1;
-        } else {
-            let v = world.body_at(s).linvel();
-            let m = 1.0 / w;
-            sum += m * x;
-            speed += m * f64::from(along(row.axis, v.x, v.y));
-            weight += m;
-        }
-    }
-    if weight == 0.0 {
-        return;
-    }
-    let (line, line_speed) = if fixed_count > 0 {
-        (fixed / f64::from(fixed_count), 0.0)
-    } else {
-        (sum / weight, speed / weight)
-    };
-    for &s in &row.slots {
-        let s = s as usize;
-        if inverse_mass(world, s) == 0.0 {
-            continue;
-        }
-        let t = world.body_at(s).translation();
-        let v = world.body_at(s).linvel();
-        let by = (line - f64::from(along(row.axis, t.x, t.y))) as f32;
-        let dv = (line_speed - f64::from(along(row.axis, v.x, v.y))) as f32;
-        shift(world, s, row.axis, by, dv);
-    }
+/// The coordinate of the body in `slot` on `axis`.
+fn at<N: Clone + Eq + Hash>(world: &RapierSceneWorld<N>, slot: u32, axis: usize) -> f32 {
+    let t = world.body_at(slot as usize).translation();
+    [t.x, t.y][axis]
 }
 
 impl Separation {
     /// How far its second body is short of the gap (0 or less when it holds).
     pub(crate) fn shortfall<N: Clone + Eq + Hash>(&self, world: &RapierSceneWorld<N>) -> f32 {
-        let at = |s: u32| {
-            let t = world.body_at(s as usize).translation();
-            along(self.axis, t.x, t.y)
-        };
-        self.gap - (at(self.second) - at(self.first))
+        let axis = index(self.axis);
+        self.gap - (at(world, self.second, axis) - at(world, self.first, axis))
     }
 }
 
 impl Row {
     /// The distance between the row's two farthest bodies across its line.
     pub(crate) fn spread<N: Clone + Eq + Hash>(&self, world: &RapierSceneWorld<N>) -> f32 {
-        let (mut low, mut high) = (f32::INFINITY, f32::NEG_INFINITY);
-        for &s in &self.slots {
-            let t = world.body_at(s as usize).translation();
-            let x = along(self.axis, t.x, t.y);
-            low = low.min(x);
-            high = high.max(x);
-        }
+        let axis = index(self.axis);
+        let (low, high) =
+            self.slots
+                .iter()
+                .fold((f32::INFINITY, f32::NEG_INFINITY), |(low, high), &s| {
+                    let x = at(world, s, axis);
+                    (low.min(x), high.max(x))
+                });
         (high - low).max(0.0)
     }
 }

@@ -27,11 +27,37 @@ pub enum Axis {
 /// assert_eq!(constraints[1].nodes(), &[3, 4, 5]);
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "Parts<N>", bound(deserialize = "N: Deserialize<'de>"))]
 pub struct Constraint<N> {
     kind: Kind,
     axis: Axis,
     /// `[left, right]` of a separation; the row of an alignment.
     nodes: Vec<N>,
+}
+
+/// A [`Constraint`] as read: refused unless a separation names two nodes.
+#[derive(Deserialize)]
+struct Parts<N> {
+    kind: Kind,
+    axis: Axis,
+    nodes: Vec<N>,
+}
+
+impl<N> TryFrom<Parts<N>> for Constraint<N> {
+    type Error = String;
+
+    fn try_from(parts: Parts<N>) -> Result<Self, String> {
+        match (parts.kind, parts.nodes.len()) {
+            (Kind::Separation { .. }, n) if n != 2 => {
+                Err(format!("a separation names two nodes, not {n}"))
+            }
+            _ => Ok(Self {
+                kind: parts.kind,
+                axis: parts.axis,
+                nodes: parts.nodes,
+            }),
+        }
+    }
 }
 
 /// What a [`Constraint`] holds.
@@ -78,5 +104,22 @@ impl<N> Constraint<N> {
             Kind::Separation { gap } => Some(gap),
             Kind::Align => None,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Axis, Constraint};
+
+    #[test]
+    fn a_separation_read_with_other_than_two_nodes_is_refused() {
+        let good = Constraint::separation(Axis::Y, 1_u32, 2, 80.0);
+        let text = serde_json::to_string(&good).unwrap();
+        let read: Constraint<u32> = serde_json::from_str(&text).unwrap();
+        assert_eq!(read, good);
+        let three = text.replace("[1,2]", "[1,2,3]");
+        assert_ne!(three, text, "the nodes were found in {text}");
+        let error = serde_json::from_str::<Constraint<u32>>(&three).unwrap_err();
+        assert!(error.to_string().contains("not 3"), "{error}");
     }
 }

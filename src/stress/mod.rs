@@ -17,5 +17,5 @@ pub(crate) mod sgd;
 pub(crate) mod start;
 
 pub(crate) use force::StressForce;
-pub(crate) use placement::{start_world, WorldOrigin};
+pub(crate) use placement::{start_world, StartConstraints, WorldOrigin};
 pub(crate) use rest_bias::RestBias;

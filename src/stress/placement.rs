@@ -32,6 +32,14 @@ pub(crate) struct WorldOrigin {
     pub(crate) cold_start: bool,
 }
 
+/// Hard constraints on the start: `hold(positions by slot, world units per unit)` after
+/// each descent pass, and whether there are any (a start with them is shifted onto the
+/// held nodes, not turned).
+pub(crate) struct StartConstraints<'a> {
+    pub(crate) hold: &'a mut dyn FnMut(&mut [[f32; 2]], f32),
+    pub(crate) any: bool,
+}
+
 /// For a stress layout's new `world` (its bodies inserted, its joints not yet):
 /// chooses the hop length and, on the first world with a global start, moves the
 /// bodies to the start layout. Returns the model built on the way, for the force.
@@ -39,9 +47,8 @@ pub(crate) fn start_world<N: Clone + Eq + Hash>(
     stress: StressModel,
     origin: WorldOrigin,
     world: &mut RapierSceneWorld<N>,
-    scene: &CanvasSceneInput<N>,
-    topology: &Topology,
-    extras: &LayoutExtras<N>,
+    (scene, topology, extras): (&CanvasSceneInput<N>, &Topology, &LayoutExtras<N>),
+    constraints: StartConstraints<'_>,
 ) -> SparseStress {
     let edges: Vec<(usize, usize)> = topology
         .edges
@@ -69,9 +76,9 @@ pub(crate) fn start_world<N: Clone + Eq + Hash>(
             let radii: Vec<f32> = (0..world.slot_count())
                 .map(|s| seating_radius(world.shape_at(s)))
                 .collect();
-            let start = global_start(&graph, &model, &radii, plan);
+            let start = global_start(&graph, &model, &radii, plan, constraints.hold);
             if global {
-                place(world, start.positions, scene, extras);
+                place(world, start.positions, (scene, extras), !constraints.any);
             }
             start.hop_length
         }
@@ -118,14 +125,15 @@ fn plan_for<N: Clone + Eq + Hash>(
     }
 }
 
-/// Moves every body to its start position, the start turned and shifted to put the
-/// host's held nodes (pinned or dragged, which stay where the host has them) as near
-/// their own positions as a rigid motion can.
+/// Moves every body to its start position, the start turned (when `turn`) and shifted
+/// to put the host's held nodes (pinned or dragged, which stay where the host has them)
+/// as near their own positions as a rigid motion can. A start under constraints is
+/// only shifted: a turn would point a flow elsewhere.
 fn place<N: Clone + Eq + Hash>(
     world: &mut RapierSceneWorld<N>,
     mut positions: Vec<Point2D<f32>>,
-    scene: &CanvasSceneInput<N>,
-    extras: &LayoutExtras<N>,
+    (scene, extras): (&CanvasSceneInput<N>, &LayoutExtras<N>),
+    turn: bool,
 ) {
     let held: Vec<(usize, Point2D<f32>)> = scene
         .nodes
@@ -133,7 +141,7 @@ fn place<N: Clone + Eq + Hash>(
         .filter(|n| extras.pinned.contains(&n.id) || extras.dragging.contains(&n.id))
         .filter_map(|n| Some((world.slot_of(&n.id)?, n.position)))
         .collect();
-    align(&mut positions, &held);
+    align(&mut positions, &held, turn);
     for (s, p) in positions.into_iter().enumerate() {
         if p.is_finite() {
             world
@@ -143,9 +151,10 @@ fn place<N: Clone + Eq + Hash>(
     }
 }
 
-/// The rigid motion (a turn, perhaps a mirror, and a shift) that puts `positions[s]`
-/// nearest `target` over the `held` pairs, applied to every position.
-fn align(positions: &mut [Point2D<f32>], held: &[(usize, Point2D<f32>)]) {
+/// The rigid motion (a turn, perhaps a mirror, and a shift; only the shift unless
+/// `turns`) that puts `positions[s]` nearest `target` over the `held` pairs, applied to
+/// every position.
+fn align(positions: &mut [Point2D<f32>], held: &[(usize, Point2D<f32>)], turns: bool) {
     if held.is_empty() {
         return;
     }
@@ -182,14 +191,15 @@ fn align(positions: &mut [Point2D<f32>], held: &[(usize, Point2D<f32>)]) {
     };
     let plain = fit(false, turn);
     let mirrored = fit(true, mirrored_turn);
-    let best: &dyn Fn(Vector2D<f32>) -> Vector2D<f32> =
-        if held.len() > 1 && error(&mirrored) < error(&plain) {
-            &mirrored
-        } else if held.len() > 1 {
-            &plain
-        } else {
-            &|v| v
-        };
+    let best: &dyn Fn(Vector2D<f32>) -> Vector2D<f32> = if !turns {
+        &|v| v
+    } else if held.len() > 1 && error(&mirrored) < error(&plain) {
+        &mirrored
+    } else if held.len() > 1 {
+        &plain
+    } else {
+        &|v| v
+    };
     for p in positions.iter_mut() {
         *p = (best(p.to_vector() - from) + to).to_point();
     }

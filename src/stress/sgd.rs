@@ -51,13 +51,15 @@ fn weight_range(model: &SparseStress) -> (f32, f32) {
 
 /// `passes` passes of stress SGD over `model`'s terms, moving `xy` (hop units). Nodes
 /// whose position is the same as a term's other end are nudged apart along a direction
-/// fixed by the pair.
+/// fixed by the pair. `between` runs after each pass: a projection onto hard
+/// constraints there makes the descent minimise stress subject to them (the
+/// constrained stress of IPSep-CoLa and DIG-CoLa, by projected gradient steps).
 pub(crate) fn stress_passes(
     graph: &Graph,
     model: &SparseStress,
     xy: &mut [[f32; 2]],
-    passes: usize,
-    seed: u64,
+    (passes, seed): (usize, u64),
+    between: &mut dyn FnMut(&mut [[f32; 2]]),
 ) {
     let n = graph.len();
     if passes == 0 || n == 0 {
@@ -81,6 +83,7 @@ pub(crate) fn stress_passes(
         for pass in 0..passes {
             shuffle(&mut terms, &mut rng);
             visit(xy, &terms, eta_max * (decay * pass as f32).exp());
+            between(xy);
         }
         return;
     }
@@ -104,6 +107,7 @@ pub(crate) fn stress_passes(
             shuffle(&mut terms, &mut rng);
             visit(xy, &terms, eta);
         }
+        between(xy);
     }
 }
 

@@ -67,12 +67,15 @@ pub(crate) struct StartPlan {
     pub(crate) centre: Point2D<f32>,
 }
 
-/// The start layout of `graph` under `model`, for nodes of `radii`.
+/// The start layout of `graph` under `model`, for nodes of `radii`. `between` runs after
+/// each descent pass on the positions and the world units a hop unit stands for (at
+/// least: the hop length only grows from there), to hold hard constraints.
 pub(crate) fn global_start(
     graph: &Graph,
     model: &SparseStress,
     radii: &[f32],
     plan: StartPlan,
+    between: &mut dyn FnMut(&mut [[f32; 2]], f32),
 ) -> Start {
     let n = graph.len();
     let mut members: Vec<Vec<u32>> = vec![Vec::new(); model.sizes.len()];
@@ -90,7 +93,10 @@ pub(crate) fn global_start(
         let mut best: Option<(f64, Vec<[f32; 2]>)> = None;
         for seed in 0..SMALL_GRAPH_STARTS {
             let mut tried = xy.clone();
-            stress_passes(graph, model, &mut tried, plan.passes, 0x5eed + seed);
+            let order = (plan.passes, 0x5eed + seed);
+            stress_passes(graph, model, &mut tried, order, &mut |xy| {
+                between(xy, plan.min_length)
+            });
             let stress = full_stress(model, &tried);
             if best.as_ref().is_none_or(|(s, _)| stress < *s) {
                 best = Some((stress, tried));
@@ -98,7 +104,10 @@ pub(crate) fn global_start(
         }
         xy = best.map_or(xy, |(_, tried)| tried);
     } else {
-        stress_passes(graph, model, &mut xy, plan.passes, 0x5eed);
+        let order = (plan.passes, 0x5eed);
+        stress_passes(graph, model, &mut xy, order, &mut |xy| {
+            between(xy, plan.min_length)
+        });
     }
     let hop_length = if plan.fit {
         plan.min_length
@@ -117,6 +126,14 @@ pub(crate) fn global_start(
         largest + 0.5 * hop_length,
         plan.centre,
     );
+    if members.len() > 1 {
+        // Packing moves each component on its own: the constraints between them again.
+        let mut xy: Vec<[f32; 2]> = positions.iter().map(|p| [p.x, p.y]).collect();
+        between(&mut xy, 1.0);
+        for (p, [x, y]) in positions.iter_mut().zip(xy) {
+            *p = Point2D::new(x, y);
+        }
+    }
     Start {
         positions,
         hop_length,

@@ -44,6 +44,17 @@ impl Disturbances {
         self.touched.push((slot as u32, false, false));
     }
 
+    /// Records an edit of the hard constraints: the nodes in `slots` (those of the
+    /// constraints added or removed) heat with their neighbourhoods. An edit that names
+    /// half of the world's `slot_count` nodes or more (a flow turned on) heats it all.
+    pub(in crate::adapter) fn touch_constraints(&mut self, slots: &[u32], slot_count: usize) {
+        if slots.is_empty() || 2 * slots.len() >= slot_count {
+            self.touch_everything();
+        } else {
+            self.touched.extend(slots.iter().map(|&s| (s, true, true)));
+        }
+    }
+
     /// Records a disturbance of the whole layout.
     pub(in crate::adapter) fn touch_everything(&mut self) {
         self.everything = true;

@@ -47,6 +47,24 @@ pub(super) fn drive_kinematic_bodies<N: Clone + Eq + Hash>(
     }
 }
 
+/// After the call's substeps: a driven body rapier left short of where the host holds
+/// it goes there. rapier moves a kinematic body to its target in a step, but not one
+/// it leaves out of the step's active bodies (found by the `session` fuzz target:
+/// `tests/regression_held_body_left_behind.rs`).
+pub(super) fn land_driven_bodies<N: Clone + Eq + Hash>(
+    world: &mut RapierSceneWorld<N>,
+    drives: &[Drive],
+) {
+    for drive in drives {
+        let t = world.body_at(drive.slot as usize).translation();
+        if (t.x, t.y) != (drive.to.x, drive.to.y) && drive.to.is_finite() {
+            let body = world.body_at_mut(drive.slot as usize);
+            body.set_translation(Vector::new(drive.to.x, drive.to.y), false);
+            body.set_next_kinematic_translation(Vector::new(drive.to.x, drive.to.y));
+        }
+    }
+}
+
 /// Whether a driven kinematic body still carries the "moving fast" flag rapier's
 /// continuous collision detection gave it while it was dynamic: rapier's CCD pass would
 /// then clamp its commanded motion (a dragged node 0.75 of a frame's move behind the

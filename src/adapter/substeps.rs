@@ -7,7 +7,7 @@ use std::hash::Hash;
 
 use euclid::default::Vector2D;
 
-use super::drag::{drive_kinematic_bodies, stale_ccd_in, Drive};
+use super::drag::{drive_kinematic_bodies, land_driven_bodies, stale_ccd_in, Drive};
 use super::heat::FrameHeat;
 use super::node_forces::hold_locked_axes;
 use super::state::RapierLayoutState;
@@ -137,5 +137,6 @@ impl<N: Clone + Eq + Hash> Substeps<'_, N> {
                 }
             });
         }
+        land_driven_bodies(world, drives);
     }
 }

@@ -48,7 +48,7 @@ impl Disturbances {
     /// constraints added or removed) heat with their neighbourhoods. An edit that names
     /// half of the world's `slot_count` nodes or more (a flow turned on) heats it all.
     pub(in crate::adapter) fn touch_constraints(&mut self, slots: &[u32], slot_count: usize) {
-        if slots.is_empty() || 2 * slots.len() >= slot_count {
+        if 2 * slots.len() >= slot_count {
             self.touch_everything();
         } else {
             self.touched.extend(slots.iter().map(|&s| (s, true, true)));

@@ -4,7 +4,8 @@
 //! configuration; long ones (hundreds of calls, drags that outlive edits and pin
 //! toggles, nodes dragged as they are added, grabs of flying nodes, frame times mixing
 //! tiny and capped ones, runs to rest and the halted world after it) under the default
-//! and the force-directed configuration.
+//! and the force-directed configuration. Any of them under a flow, with hard constraints
+//! (bad ones too) coming and going.
 
 mod common;
 
@@ -13,7 +14,7 @@ use common::FRAME;
 use graph_canvas_layout::config::Contacts;
 use graph_canvas_layout::config::TopologyUpdate;
 use graph_canvas_layout::scene::AxisLock;
-use graph_canvas_layout::{EdgeJoint, NodeForces, RapierLayoutConfig};
+use graph_canvas_layout::{Axis, Constraint, EdgeJoint, Flow, NodeForces, RapierLayoutConfig};
 use proptest::prelude::*;
 
 const IDS: u32 = 12;
@@ -82,6 +83,34 @@ fn node_forces() -> impl Strategy<Value = NodeForces> {
     ]
 }
 
+/// A hard constraint between the session's ids: separations (bad gaps too) and rows.
+fn constraint() -> impl Strategy<Value = Constraint<u32>> {
+    let axis = prop_oneof![Just(Axis::X), Just(Axis::Y)];
+    let gap = prop_oneof![
+        4 => prop_oneof![Just(0.0_f32), Just(40.0), Just(90.0)],
+        1 => prop_oneof![Just(-1.0_f32), Just(f32::NAN), Just(f32::INFINITY)],
+    ];
+    prop_oneof![
+        3 => (axis.clone(), 0..IDS, 0..IDS, gap)
+            .prop_map(|(a, l, r, g)| Constraint::separation(a, l, r, g)),
+        1 => (axis, prop::collection::vec(0..IDS, 0..5)).prop_map(|(a, n)| Constraint::align(a, n)),
+    ]
+}
+
+/// No flow, or one along any direction.
+fn flow() -> impl Strategy<Value = Option<Flow>> {
+    prop_oneof![
+        2 => Just(None),
+        1 => prop_oneof![
+            Just(Flow::down(60.0)),
+            Just(Flow::up(0.0)),
+            Just(Flow::right(40.0)),
+            Just(Flow::left(f32::NAN)),
+        ]
+        .prop_map(Some),
+    ]
+}
+
 fn action() -> impl Strategy<Value = Action> {
     let id = 0..IDS;
     prop_oneof![
@@ -100,6 +129,7 @@ fn action() -> impl Strategy<Value = Action> {
         1 => (id.clone(), node_forces()).prop_map(|(i, f)| Action::Force(i, f)),
         1 => (id.clone(), side(), side(), corner()).prop_map(|(i, w, h, c)| Action::Reshape(i, w, h, c)),
         1 => Just(Action::Resume),
+        1 => constraint().prop_map(Action::Constrain),
         6 => frame_time().prop_map(Action::Step),
     ]
 }
@@ -124,6 +154,8 @@ fn long_action() -> impl Strategy<Value = Action> {
         1 => (id.clone(), node_forces()).prop_map(|(i, f)| Action::Force(i, f)),
         1 => (id.clone(), side(), side(), corner()).prop_map(|(i, w, h, c)| Action::Reshape(i, w, h, c)),
         1 => Just(Action::Resume),
+        1 => constraint().prop_map(Action::Constrain),
+        1 => Just(Action::Unconstrain),
         12 => frame_time().prop_map(Action::Step),
     ]
 }
@@ -145,8 +177,9 @@ fn config() -> impl Strategy<Value = RapierLayoutConfig> {
         ],
         any::<bool>(),
         0..3_u8,
+        flow(),
     )
-        .prop_map(|(edge_joint, topology_update, collisions, preset)| {
+        .prop_map(|(edge_joint, topology_update, collisions, preset, flow)| {
             // The presets' extras: many-body repulsion, springs shared by degree, a
             // cooling schedule and firm contacts; or the stress model.
             let base = match preset {
@@ -161,20 +194,24 @@ fn config() -> impl Strategy<Value = RapierLayoutConfig> {
                     enabled: collisions,
                     ..base.contacts
                 },
+                flow,
                 ..base
             }
         })
 }
 
-/// The configurations of the long sessions: the default and the force-directed one,
-/// whole.
+/// The configurations of the long sessions: each preset whole, under a flow or not.
 fn long_config() -> impl Strategy<Value = RapierLayoutConfig> {
-    prop_oneof![
-        Just(RapierLayoutConfig::default()),
-        Just(RapierLayoutConfig::force_directed()),
-        Just(RapierLayoutConfig::force_directed_fast()),
-        Just(RapierLayoutConfig::stress()),
-    ]
+    (
+        prop_oneof![
+            Just(RapierLayoutConfig::default()),
+            Just(RapierLayoutConfig::force_directed()),
+            Just(RapierLayoutConfig::force_directed_fast()),
+            Just(RapierLayoutConfig::stress()),
+        ],
+        flow(),
+    )
+        .prop_map(|(config, flow)| RapierLayoutConfig { flow, ..config })
 }
 
 proptest! {

@@ -21,6 +21,10 @@ pub struct Drag {
     /// The worst shortfall of any frame.
     pub worst: f32,
     pub p95_ms: f64,
+    /// Where the drag's time went, per frame (ms): forces, contacts, rapier, constraints.
+    pub stages_ms: [f64; 4],
+    /// Dynamic bodies awake after a frame, on average: what the drag moves.
+    pub awake: usize,
 }
 
 /// Drags the scene's busiest node in `host` (at rest) and measures each frame.
@@ -29,8 +33,9 @@ pub fn drag(host: &mut Host, gap: f32, frame_dt: f32) -> Drag {
     let centre = host.pos(node);
     let exempt = host.layout.flow_exempt_edges().to_vec();
     host.extras.dragging = [node].into_iter().collect();
+    host.layout.set_profiling(true);
     let (mut worst, mut worst_after_grace) = (0.0_f32, 0.0_f32);
-    let mut steps = Vec::new();
+    let (mut steps, mut awake) = (Vec::new(), 0);
     for frame in 1..=180 {
         let angle = (frame as f32 * 2.0).to_radians();
         let at = centre + Vector2D::new(angle.cos() - 1.0, angle.sin()) * 200.0;
@@ -38,6 +43,7 @@ pub fn drag(host: &mut Host, gap: f32, frame_dt: f32) -> Drag {
         let started = Instant::now();
         host.frame(frame_dt);
         steps.push(started.elapsed().as_secs_f64() * 1e3);
+        awake += host.layout.world().map_or(0, |w| w.awake_dynamic_count());
         let short = worst_shortfall(&host.scene, gap, &exempt);
         worst = worst.max(short);
         if frame > GRACE {
@@ -45,8 +51,14 @@ pub fn drag(host: &mut Host, gap: f32, frame_dt: f32) -> Drag {
         }
     }
     host.extras.dragging.clear();
+    let p = host.layout.profile().expect("profiling on");
+    host.layout.set_profiling(false);
+    let per_frame = |d: std::time::Duration| d.as_secs_f64() * 1e3 / steps.len() as f64;
+    let stages_ms = [p.forces, p.contacts, p.rapier, p.constraints].map(per_frame);
     steps.sort_by(f64::total_cmp);
     Drag {
+        awake: awake / steps.len(),
+        stages_ms,
         node,
         worst_after_grace,
         worst,

@@ -243,11 +243,20 @@ fn main() {
                 .map(|d| d.iter().map(|d| d.p95_ms).collect())
                 .collect();
             let (plain, flowing) = (median(&mut p[0]), median(&mut p[1]));
+            let stages = |d: &[drag::Drag]| {
+                let (s, awake) = (d[d.len() / 2].stages_ms, d[d.len() / 2].awake);
+                format!(
+                    "{awake} bodies awake; ms a frame: forces {:.2}, contacts {:.2}, rapier {:.2}, constraints {:.2}",
+                    s[0], s[1], s[2], s[3]
+                )
+            };
             println!(
-                "| {name} | drag of node {} for 180 frames | worst shortfall after frame {}: {worst:.2} (any frame: {any:.2}) | step p95 {flowing:.2} ms vs {plain:.2} ms without the flow ({:.2} ×) |",
+                "| {name} | drag of node {} for 180 frames | worst shortfall after frame {}: {worst:.2} (any frame: {any:.2}) | step p95 {flowing:.2} ms vs {plain:.2} ms without the flow ({:.2} ×); {} vs {} |",
                 drags[1][0].node,
                 drag::GRACE,
-                flowing / plain
+                flowing / plain,
+                stages(&drags[1]),
+                stages(&drags[0]),
             );
         }
     }

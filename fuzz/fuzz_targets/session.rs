@@ -1,13 +1,15 @@
-//! A host session decoded from the fuzzer's bytes: a configuration, then host actions
-//! (nodes and edges added and removed, pins, drags, throws, host moves, bad values, any
-//! frame time, runs to rest), with the invariants of `tests/sessions.rs` checked after
-//! every call and a second layout fed the same session, saved and restored through JSON
-//! wherever the session says so, compared bit for bit. Any
-//! broken invariant or panic is a finding.
+//! A host session decoded from the fuzzer's bytes: a configuration (a flow or none),
+//! then host actions (nodes and edges added and removed, pins, drags, throws, host
+//! moves, hard constraints, bad values, any frame time, runs to rest), with the
+//! invariants of `tests/sessions.rs` checked after every call and a second layout fed
+//! the same session, saved and restored through JSON wherever the session says so,
+//! compared bit for bit. Any broken invariant or panic is a finding.
 #![no_main]
 
 use arbitrary::{Result, Unstructured};
-use graph_canvas_layout::{BodyKindPolicy, EdgeJoint, NodeForces, RapierLayoutConfig};
+use graph_canvas_layout::{
+    Axis, BodyKindPolicy, Constraint, EdgeJoint, Flow, NodeForces, RapierLayoutConfig,
+};
 use graph_canvas_layout::scene::AxisLock;
 use graph_canvas_layout::config::{Contacts, TopologyUpdate};
 use libfuzzer_sys::fuzz_target;
@@ -60,7 +62,35 @@ fn config(u: &mut Unstructured) -> Result<RapierLayoutConfig> {
             events: u.ratio(1, 4)?,
             ..base.contacts
         },
+        flow: match u.int_in_range(0..=7)? {
+            0 => Some(Flow::down(gap(u)?)),
+            1 => Some(Flow::up(gap(u)?)),
+            2 => Some(Flow::right(gap(u)?)),
+            3 => Some(Flow::left(gap(u)?)),
+            _ => None,
+        },
         ..base
+    })
+}
+
+/// A constraint's or a flow's gap: an ordinary one, 0, or any bits.
+fn gap(u: &mut Unstructured) -> Result<f32> {
+    Ok(match u.int_in_range(0..=3)? {
+        0 => f32::from_bits(u.arbitrary()?),
+        1 => 0.0,
+        n => 40.0 * n as f32,
+    })
+}
+
+/// A hard constraint between the session's ids: a separation or a row.
+fn constraint(u: &mut Unstructured) -> Result<Constraint<u32>> {
+    let axis = if u.arbitrary()? { Axis::X } else { Axis::Y };
+    let id = |u: &mut Unstructured| u.int_in_range(0..=IDS - 1);
+    Ok(if u.ratio(3, 4)? {
+        Constraint::separation(axis, id(u)?, id(u)?, gap(u)?)
+    } else {
+        let count = u.int_in_range(0..=4)?;
+        Constraint::align(axis, (0..count).map(|_| id(u)).collect::<Result<_>>()?)
     })
 }
 
@@ -97,7 +127,7 @@ fn frame_time(u: &mut Unstructured) -> Result<f32> {
 
 fn action(u: &mut Unstructured) -> Result<Action> {
     let id = |u: &mut Unstructured| u.int_in_range(0..=IDS - 1);
-    Ok(match u.int_in_range(0..=17)? {
+    Ok(match u.int_in_range(0..=19)? {
         0 => Action::AddNode(id(u)?, coordinate(u)?, coordinate(u)?),
         1 => Action::AddDragged(id(u)?, coordinate(u)?, coordinate(u)?),
         2 => Action::RemoveNode(id(u)?),
@@ -131,6 +161,8 @@ fn action(u: &mut Unstructured) -> Result<Action> {
                 n => (n - 1) as f32 * 8.0,
             },
         ),
+        18 if u.ratio(1, 2)? => Action::Constrain(constraint(u)?),
+        19 if u.ratio(1, 4)? => Action::Unconstrain,
         _ => Action::Step(frame_time(u)?),
     })
 }

@@ -583,7 +583,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             &self.config.rest,
             self.world.as_mut(),
             &mut self.matching,
-            &mut self.forces,
+            (&mut self.forces, &mut self.constraints),
         );
         // 8. Rest.
         self.heat.track_rest(

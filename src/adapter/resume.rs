@@ -16,6 +16,7 @@ use super::matching::Matching;
 use super::RapierLayout;
 use crate::config::RapierLayoutConfig;
 use crate::config::REST_TIME;
+use crate::constraints::{Compiled, SavedConstraints};
 use crate::input::snapshot_error::{check_counters, SnapshotError};
 use crate::simulate::{Forces, SavedForces};
 use crate::world::saved::SavedWorld;
@@ -81,6 +82,10 @@ pub struct LayoutSnapshot<N> {
     gravity: Vector2D<f32>,
     cold_start: bool,
     world: Option<SavedWorld<N>>,
+    /// The constraints the last call held (absent from snapshots of earlier builds: the
+    /// first call after their restore takes the constraints as no edit).
+    #[serde(default)]
+    constraints: SavedConstraints<N>,
 }
 
 impl<N> LayoutSnapshot<N> {
@@ -179,6 +184,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             gravity: self.host.gravity,
             cold_start: self.built.cold_start,
             world: self.world.as_ref().map(RapierSceneWorld::save),
+            constraints: self.constraints.save(),
         }
     }
 
@@ -267,6 +273,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 ..HeatStage::default()
             },
             forces,
+            constraints: Compiled::restored(snapshot.constraints),
             // A setting of the host's, not of the layout's state.
             pool_awake: self.pool_awake,
             ..Self::new(RapierLayoutConfig::default())

@@ -9,6 +9,7 @@ use rapier2d::prelude::Vector;
 
 use super::matching::{Matching, NO_SLOT};
 use crate::config::RestDetection;
+use crate::constraints::Compiled;
 use crate::input::layout::{DeltaMap, IdHasher};
 use crate::input::scene::CanvasSceneInput;
 use crate::input::validation::{position_in_range, MAX_COORDINATE};
@@ -30,14 +31,14 @@ pub(super) struct FrameReport<N> {
 /// every body the scene names when it logged too many to say. `awake_before` is
 /// rapier's count of simulated bodies before the step: when it was 0 and still is,
 /// nothing moved and no body needs reading. Records the moved slots in `matching` and
-/// catches the forces' kept bodies up.
+/// catches the forces' and the constraints' kept bodies up.
 pub(super) fn sync_out<N: Clone + Eq + Hash>(
     scene: &CanvasSceneInput<N>,
     awake_before: usize,
     rest: &RestDetection,
     world: Option<&mut RapierSceneWorld<N>>,
     matching: &mut Matching<N>,
-    forces: &mut Forces<N>,
+    (forces, constraints): (&mut Forces<N>, &mut Compiled<N>),
 ) -> FrameReport<N> {
     matching.moved_mut().clear();
     let epsilon = rest.delta_epsilon.max(0.0);
@@ -97,6 +98,7 @@ pub(super) fn sync_out<N: Clone + Eq + Hash>(
         matching.moved_mut().push(s as u32);
     }
     forces.catch_up(world);
+    constraints.catch_up(world);
     world.forget_changes();
     for s in inexact {
         world.mark_changed(s);

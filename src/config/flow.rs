@@ -46,6 +46,8 @@ impl Flow {
     }
 
     fn along(axis: Axis, reversed: bool, gap: f32) -> Self {
+        // Kept as `gap()` reads it: a snapshot's JSON has no NaN to write.
+        let gap = if gap.is_finite() { gap.max(0.0) } else { 0.0 };
         Self {
             axis,
             reversed,
@@ -61,6 +63,7 @@ impl Flow {
     /// The least distance from a source to its target along the axis. Not finite or
     /// negative counts as 0.
     pub fn gap(&self) -> f32 {
+        // A deserialized flow has not been through `along`.
         if self.gap.is_finite() {
             self.gap.max(0.0)
         } else {

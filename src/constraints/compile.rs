@@ -17,12 +17,14 @@ use crate::world::RapierSceneWorld;
 #[derive(Clone, Debug)]
 pub(crate) struct Compiled<N> {
     /// The host's separations and rows.
-    separations: Vec<Separation>,
-    rows: Vec<Row>,
+    pub(super) separations: Vec<Separation>,
+    pub(super) rows: Vec<Row>,
     /// A flow's edges.
-    flow: FlowEdges<N>,
-    /// All of them by local index, as the projection holds them.
+    pub(super) flow: FlowEdges<N>,
+    /// All of them by local index, as the projection holds them, and the separations a
+    /// projection's passes visit.
     pub(super) local: Local,
+    pub(super) active: Vec<u32>,
     /// Host constraints left out this call (a node the scene or world lacks, a bad gap).
     pub(crate) skipped: usize,
     /// For each host separation and row, its index in `extras.constraints`.
@@ -35,7 +37,7 @@ pub(crate) struct Compiled<N> {
     pub(crate) violated_edges: Vec<usize>,
     /// Whether a call compiled them since the layout was made or restored: the first
     /// compile is no edit (the world it holds them on is new, or restored as it was).
-    primed: bool,
+    pub(super) primed: bool,
 }
 
 impl<N> Default for Compiled<N> {
@@ -45,6 +47,7 @@ impl<N> Default for Compiled<N> {
             rows: Vec::new(),
             flow: FlowEdges::default(),
             local: Local::default(),
+            active: Vec::new(),
             skipped: 0,
             origin: Vec::new(),
             row_origin: Vec::new(),
@@ -88,7 +91,8 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
         }
         let mut edit = Vec::new();
         let flow_changed = self.flow.sync(flow, scene, world, generation, &mut edit);
-        if !flow_changed && before.0 == self.separations && before.1 == self.rows {
+        let same = before.0 == self.separations && before.1 == self.rows;
+        if !flow_changed && same && self.local.fits(world.slot_count()) {
             return None;
         }
         self.local.index(
@@ -120,6 +124,7 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
     /// After the call's substeps: which constraints rest more than [`HELD_WITHIN`] from
     /// holding (conflicting ones that cannot all hold, or ones still settling).
     pub(crate) fn check(&mut self, world: &RapierSceneWorld<N>) {
+        self.local.refresh(world);
         self.violated.clear();
         self.violated_edges.clear();
         for (k, c) in self.separations.iter().enumerate() {
@@ -134,11 +139,24 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
         }
         self.violated.sort_unstable();
         self.violated.dedup();
-        for (c, &edge) in self.flow.separations.iter().zip(&self.flow.edge_of) {
-            if c.shortfall(world) > HELD_WITHIN {
-                self.violated_edges.push(edge);
+        // The flow's, of which there are as many as edges, from the kept arrays (what
+        // the world holds, caught up); a link's id past the host's separations is its
+        // place among the flow's.
+        let host = self.separations.len();
+        for c in &self.local.links {
+            let Some(k) = (c.id as usize).checked_sub(host) else {
+                continue;
+            };
+            if self.local.shortfall(c) > HELD_WITHIN {
+                self.violated_edges.push(self.flow.edge_of[k]);
             }
         }
+        self.violated_edges.sort_unstable();
+    }
+
+    /// Before the world forgets its changes: catches the kept bodies up.
+    pub(crate) fn catch_up(&mut self, world: &RapierSceneWorld<N>) {
+        self.local.catch_up(world);
     }
 
     /// Adds one host constraint; false when it names a node without a body or has an

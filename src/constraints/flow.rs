@@ -7,6 +7,7 @@ use std::hash::Hash;
 
 use petgraph::algo::greedy_feedback_arc_set;
 use petgraph::graph::DiGraph;
+use serde::{Deserialize, Serialize};
 
 use super::{changed_slots, Separation};
 use crate::config::Flow;
@@ -18,7 +19,8 @@ use crate::world::RapierSceneWorld;
 type FlowKey = (Axis, bool, u32);
 
 /// A flow's separations and what they were compiled from.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(bound(serialize = "N: Serialize", deserialize = "N: Deserialize<'de>"))]
 pub(super) struct FlowEdges<N> {
     pub(super) separations: Vec<Separation>,
     /// The scene edge of each separation, in order.
@@ -29,7 +31,7 @@ pub(super) struct FlowEdges<N> {
     /// count and version) they were compiled for.
     key: Option<(FlowKey, (u64, u64))>,
     /// The scene's edges they were compiled from, `(source, target)` in order.
-    edges: Vec<(N, N)>,
+    pub(super) edges: Vec<(N, N)>,
 }
 
 impl<N> Default for FlowEdges<N> {
@@ -68,10 +70,7 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
                 .iter()
                 .zip(&scene.edges)
                 .all(|((s, t), e)| *s == e.source && *t == e.target);
-        let key = Some((
-            (flow.axis(), flow.order(false, true).0, flow.gap().to_bits()),
-            generation,
-        ));
+        let key = Some(key(flow, generation));
         if same_edges && self.key == key {
             return false;
         }
@@ -87,14 +86,21 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
         }
         self.key = key;
         let before = std::mem::take(&mut self.separations);
+        self.compile(flow, world);
+        changed_slots(&before, &self.separations, edit);
+        before != self.separations
+    }
+
+    /// The separations of the edges in `self.edges` but the exempt ones, for `world`.
+    fn compile(&mut self, flow: Flow, world: &RapierSceneWorld<N>) {
+        self.separations.clear();
         self.edge_of.clear();
         let mut exempt = self.exempt.iter().peekable();
-        for (i, edge) in scene.edges.iter().enumerate() {
+        for (i, (source, target)) in self.edges.iter().enumerate() {
             if exempt.next_if(|&&e| e == i).is_some() {
                 continue;
             }
-            let (Some(a), Some(b)) = (world.slot_of(&edge.source), world.slot_of(&edge.target))
-            else {
+            let (Some(a), Some(b)) = (world.slot_of(source), world.slot_of(target)) else {
                 continue;
             };
             let (first, second) = flow.order(a, b);
@@ -106,9 +112,15 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
                 gap: flow.gap(),
             });
         }
-        changed_slots(&before, &self.separations, edit);
-        before != self.separations
     }
+}
+
+/// A flow and the world's generation as compared between calls.
+fn key(flow: Flow, generation: (u64, u64)) -> (FlowKey, (u64, u64)) {
+    (
+        (flow.axis(), flow.order(false, true).0, flow.gap().to_bits()),
+        generation,
+    )
 }
 
 /// The scene edges a flow leaves free, ascending: self-loops, and a greedy feedback arc

@@ -8,18 +8,23 @@
 //! give way: its partners move. Gauss–Seidel passes, as the disk separation's contacts,
 //! so a chain of constraints settles over a few substeps and holds at rest.
 
+use serde::{Deserialize, Serialize};
+
 use crate::input::constraints::Axis;
 
 mod compile;
 mod flow;
 mod local;
 mod order;
+mod passes;
 mod project;
+mod saved;
 
 pub(crate) use compile::Compiled;
+pub(crate) use saved::SavedConstraints;
 
 /// `second`'s coordinate on `axis` at least `first`'s plus `gap`, by world slot.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub(crate) struct Separation {
     pub(crate) first: u32,
     pub(crate) second: u32,
@@ -28,7 +33,7 @@ pub(crate) struct Separation {
 }
 
 /// Bodies that share one coordinate on `axis`, by world slot.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub(crate) struct Row {
     pub(crate) axis: Axis,
     pub(crate) slots: Vec<u32>,

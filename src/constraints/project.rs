@@ -1,6 +1,6 @@
 //! The projection after each rapier step: Gauss–Seidel passes over the separations and
-//! rows on the constrained bodies' own arrays (`local.rs`), moving dynamic bodies only;
-//! and how far a constraint is from holding, read from the world.
+//! rows on the constrained bodies' own arrays (`local.rs`, `passes.rs`), moving dynamic
+//! bodies only; and how far a host constraint is from holding, read from the world.
 
 use std::hash::Hash;
 
@@ -29,11 +29,15 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
         self.local.scatter(world);
     }
 
-    /// `passes` passes, the sweep, then the rows on their lines.
+    /// `passes` passes over the separations a hot body is in, the sweep, then the rows
+    /// on their lines.
     fn round(&mut self, passes: usize) {
+        let mut active = std::mem::take(&mut self.active);
+        self.local.active_links(&mut active);
         for k in 0..passes {
-            self.local.pass(k % 2 == 1);
+            self.local.pass(&active, k % 2 == 1);
         }
+        self.active = active;
         self.local.sweep();
         self.local.line_up_rows();
     }
@@ -63,6 +67,7 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
             return;
         }
         self.local.gather(world, locks);
+        self.local.heat_all();
         let mut last = f32::INFINITY;
         for _ in 0..rounds {
             let worst = self.local.worst();

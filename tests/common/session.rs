@@ -9,8 +9,8 @@ use graph_canvas_layout::config::EdgeWeight;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::scene::AxisLock;
 use graph_canvas_layout::{
-    CanvasNode, CanvasSceneInput, DeltaMap, EdgeJoint, Layout, LayoutSnapshot, NodeForces,
-    RapierLayout, RapierLayoutConfig, MAX_COORDINATE,
+    CanvasNode, CanvasSceneInput, Constraint, DeltaMap, EdgeJoint, Layout, LayoutSnapshot,
+    NodeForces, RapierLayout, RapierLayoutConfig, MAX_COORDINATE,
 };
 
 use super::{edge, node, Host, FRAME};
@@ -66,6 +66,11 @@ pub enum Action {
     /// Makes a node a box of width × height with that corner radius (any values, bad
     /// ones too), or a disk again when width and height are both 0.
     Reshape(u32, f32, f32, f32),
+    /// Adds a hard constraint (bad ones too: a node the scene lacks, a bad gap); past
+    /// eight, the oldest goes.
+    Constrain(Constraint<u32>),
+    /// The host drops every constraint.
+    Unconstrain,
     /// Calls at 1/60 s until the layout rests (at most 600).
     Settle,
     /// The host saves the layout and carries on with it restored from the save (a
@@ -157,6 +162,13 @@ pub fn apply_action(host: &mut Host<u32>, action: &Action) {
                 };
             }
         }
+        Action::Constrain(ref c) => {
+            if host.extras.constraints.len() >= 8 {
+                host.extras.constraints.remove(0);
+            }
+            host.extras.constraints.push(c.clone());
+        }
+        Action::Unconstrain => host.extras.constraints.clear(),
         Action::Throw(..) | Action::Settle | Action::Resume | Action::Step(_) => {}
     }
 }
@@ -234,6 +246,18 @@ pub fn check(
         ensure!(ids.contains(id), "body for node {id}, which left the scene");
     }
     ensure_eq!(world.body_count(), world.node_ids().count());
+    let (constraints, edges) = (host.extras.constraints.len(), host.scene.edges.len());
+    for &c in host.layout.violated_constraints() {
+        ensure!(c < constraints, "violated constraint {c} of {constraints}");
+    }
+    for &e in host
+        .layout
+        .flow_exempt_edges()
+        .iter()
+        .chain(host.layout.violated_flow_edges())
+    {
+        ensure!(e < edges, "flow edge {e} reported of {edges}");
+    }
     check_joints(host, before)?;
     for n in &host.scene.nodes {
         if !usable(n) {

@@ -51,7 +51,9 @@ impl Disturbances {
         if 2 * slots.len() >= slot_count {
             self.touch_everything();
         } else {
-            self.touched.extend(slots.iter().map(|&s| (s, true, true)));
+            // A removed node's old slot may lie beyond the world now.
+            let within = slots.iter().filter(|&&s| (s as usize) < slot_count);
+            self.touched.extend(within.map(|&s| (s, true, true)));
         }
     }
 

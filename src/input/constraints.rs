@@ -14,17 +14,34 @@ pub enum Axis {
     Y,
 }
 
-/// A hard constraint between scene nodes, held within a unit at rest.
+/// A hard constraint between scene nodes, held within a unit at rest, as a
+/// [`Flow`](crate::config::Flow)'s edges are.
 ///
 /// # Example
 /// ```
+/// use graph_canvas_layout::config::Flow;
 /// use graph_canvas_layout::scene::{Axis, Constraint};
-/// // Node 2 at least 80 units below node 1; nodes 3, 4 and 5 on one vertical line.
-/// let constraints = vec![
-///     Constraint::separation(Axis::Y, 1_u32, 2, 80.0),
-///     Constraint::align(Axis::X, vec![3, 4, 5]),
-/// ];
-/// assert_eq!(constraints[1].nodes(), &[3, 4, 5]);
+/// use graph_canvas_layout::{euclid::default::Point2D, CanvasEdge, CanvasNode, CanvasSceneInput,
+///     Layout, LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState};
+/// // A build graph: app depends on two libraries, both on core.
+/// let nodes = (0..4_u32).map(|i| CanvasNode::new(i, Point2D::new(i as f32 * 10.0, 0.0)));
+/// let edges = vec![CanvasEdge::new(0, 1), CanvasEdge::new(0, 2), CanvasEdge::new(1, 3), CanvasEdge::new(2, 3)];
+/// let mut scene = CanvasSceneInput::new(nodes.collect(), edges);
+/// let mut layout = RapierLayout::new(RapierLayoutConfig::stress().with_flow(Flow::down(80.0)));
+/// let (mut state, mut extras) = (RapierLayoutState::default(), LayoutExtras::default());
+/// // The two libraries side by side, on one line.
+/// extras.constraints.push(Constraint::align(Axis::Y, vec![1, 2]));
+/// for _ in 0..600 {
+///     let deltas = layout.step(&scene, &mut state, 1.0 / 60.0, &Default::default(), &extras);
+///     scene.apply_deltas(&deltas);
+///     if layout.is_converged(&state) {
+///         break;
+///     }
+/// }
+/// let y = |i: usize| scene.nodes[i].position.y;
+/// assert!(y(1) >= y(0) + 79.0 && y(3) >= y(2) + 79.0, "every edge points down");
+/// assert!((y(1) - y(2)).abs() <= 2.0, "the libraries share a line");
+/// assert!(layout.violated_constraints().is_empty() && layout.violated_flow_edges().is_empty());
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(try_from = "Parts<N>", bound(deserialize = "N: Deserialize<'de>"))]

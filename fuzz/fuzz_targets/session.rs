@@ -7,11 +7,11 @@
 #![no_main]
 
 use arbitrary::{Result, Unstructured};
+use graph_canvas_layout::config::{Contacts, TopologyUpdate};
+use graph_canvas_layout::scene::AxisLock;
 use graph_canvas_layout::{
     Axis, BodyKindPolicy, Constraint, EdgeJoint, Flow, NodeForces, RapierLayoutConfig,
 };
-use graph_canvas_layout::scene::AxisLock;
-use graph_canvas_layout::config::{Contacts, TopologyUpdate};
 use libfuzzer_sys::fuzz_target;
 
 #[path = "../../tests/common/mod.rs"]

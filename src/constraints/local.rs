@@ -290,6 +290,7 @@ impl Local {
     pub(super) fn gather_points(&mut self, points: &[[f32; 2]], unit: f32) {
         self.clear_hot();
         self.kept = false;
+        self.locked.clear();
         self.read.clear();
         self.read.extend(self.slots.iter().map(|&s| {
             let [x, y] = points.get(s as usize).copied().unwrap_or_default();

@@ -29,9 +29,11 @@ pub(super) struct FrameReport<N> {
 
 /// Reads the dynamic bodies that may have moved: those the world logged as changed, or
 /// every body the scene names when it logged too many to say. `awake_before` is
-/// rapier's count of simulated bodies before the step: when it was 0 and still is,
-/// nothing moved and no body needs reading. Records the moved slots in `matching` and
-/// catches the forces' and the constraints' kept bodies up.
+/// rapier's count of simulated bodies before the step: when it was 0 and still is, and
+/// the constraints' projection moved no body (it moves them after rapier's step, and
+/// rapier counts a body it wakes that way only from its next step), nothing moved and
+/// no body needs reading. Records the moved slots in `matching` and catches the forces'
+/// and the constraints' kept bodies up.
 pub(super) fn sync_out<N: Clone + Eq + Hash>(
     scene: &CanvasSceneInput<N>,
     awake_before: usize,
@@ -52,7 +54,7 @@ pub(super) fn sync_out<N: Clone + Eq + Hash>(
     let Some(world) = world else {
         return report;
     };
-    if awake_before == 0 && world.awake_body_count() == 0 {
+    if awake_before == 0 && world.awake_body_count() == 0 && !constraints.moved_bodies() {
         return report;
     }
     // The bodies that may have moved since the last call: those the world reports

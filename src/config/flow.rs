@@ -5,6 +5,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::config::RapierLayoutConfig;
 use crate::input::constraints::Axis;
+use crate::sanitize::finite_or;
 
 /// Which way edges point, and how far a target rests beyond its source at least.
 ///
@@ -46,12 +47,15 @@ impl Flow {
     }
 
     fn along(axis: Axis, reversed: bool, gap: f32) -> Self {
-        // Kept as `gap()` reads it: a snapshot's JSON has no NaN to write.
-        let gap = if gap.is_finite() { gap.max(0.0) } else { 0.0 };
-        Self {
+        let flow = Self {
             axis,
             reversed,
             gap,
+        };
+        // Kept as `gap()` reads it: a snapshot's JSON has no NaN to write.
+        Self {
+            gap: flow.gap(),
+            ..flow
         }
     }
 
@@ -64,11 +68,7 @@ impl Flow {
     /// negative counts as 0.
     pub fn gap(&self) -> f32 {
         // A deserialized flow has not been through `along`.
-        if self.gap.is_finite() {
-            self.gap.max(0.0)
-        } else {
-            0.0
-        }
+        finite_or(self.gap, 0.0).max(0.0)
     }
 
     /// `(first, second)` of an edge `source -> target` as a separation: the second at

@@ -92,7 +92,11 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
         let mut edit = Vec::new();
         let flow_changed = self.flow.sync(flow, scene, world, generation, &mut edit);
         let same = before.0 == self.separations && before.1 == self.rows;
-        if !flow_changed && same && self.local.fits(world.slot_count()) {
+        // With nothing to hold, no index is needed for the world's new size (a layout
+        // without constraints indexes nothing per node added).
+        let none =
+            self.separations.is_empty() && self.rows.is_empty() && self.flow.separations.is_empty();
+        if !flow_changed && same && (none || self.local.fits(world.slot_count())) {
             return None;
         }
         self.local.index(
@@ -157,6 +161,12 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
     /// Before the world forgets its changes: catches the kept bodies up.
     pub(crate) fn catch_up(&mut self, world: &RapierSceneWorld<N>) {
         self.local.catch_up(world);
+    }
+
+    /// Whether a projection moved a body since [`catch_up`](Self::catch_up): rapier
+    /// counts a body woken that way as awake only from its next step.
+    pub(crate) fn moved_bodies(&self) -> bool {
+        self.local.wrote
     }
 
     /// Adds one host constraint; false when it names a node without a body or has an

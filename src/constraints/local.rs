@@ -56,6 +56,8 @@ pub(super) struct Local {
     /// separations of these); and the list of them.
     hot: Vec<bool>,
     pub(super) hot_list: Vec<u32>,
+    /// Whether a projection wrote a body back since the world's changes were last read.
+    pub(super) wrote: bool,
 }
 
 impl Local {
@@ -162,6 +164,7 @@ impl Local {
         if !self.read_changed(world, false) {
             self.kept = false;
         }
+        self.wrote = false;
     }
 
     /// Brings the arrays to what the world holds: the changed bodies, or all.
@@ -327,6 +330,7 @@ impl Local {
             body.set_translation(Vector::new(p[0], p[1]), true);
             body.set_linvel(Vector::new(v[0], v[1]), true);
             self.read[l] = (p, v);
+            self.wrote = true;
         }
     }
 }

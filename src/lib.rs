@@ -167,6 +167,8 @@
 //! [`Constraint::align`](crate::scene::Constraint::align) in
 //! [`LayoutExtras::constraints`] for the host's own order and lines. They are hard, not
 //! pulls: per-node forces ([`NodeForces`]) are the soft kind.
+//! [`Flow::in_layers`](crate::config::Flow::in_layers) puts the nodes in layers, the
+//! picture of Graphviz `dot` (few crossings, none on a tree; higher stress).
 //! `docs/flow.md` compares a flow with Graphviz `dot`.
 //!
 //! **Which accuracy level?** Independent of the preset: [`Accuracy::Balanced`](crate::config::Accuracy::Balanced) (default)

@@ -77,24 +77,29 @@ fn reruns_are_bit_identical() {
 fn reruns_under_a_flow_and_constraints_are_bit_identical() {
     // les_miserables' edges as listed close directed cycles: the exempt set is worked
     // out too, and again after the edit.
-    let run = || {
-        session_with(
-            120,
-            RapierLayoutConfig::stress().with_flow(Flow::down(60.0)),
-            vec![
-                Constraint::separation(Axis::X, 3, 4, 80.0),
-                Constraint::align(Axis::Y, vec![5, 6, 7]),
-            ],
-        )
-    };
-    let (a, b) = (run(), run());
-    for (frame, (x, y)) in a.iter().zip(&b).enumerate() {
-        assert_eq!(x, y, "frame {frame} differs between two identical sessions");
+    for flow in [Flow::down(60.0), Flow::down(60.0).in_layers()] {
+        let run = || {
+            session_with(
+                120,
+                RapierLayoutConfig::stress().with_flow(flow),
+                vec![
+                    Constraint::separation(Axis::X, 3, 4, 80.0),
+                    Constraint::align(Axis::Y, vec![5, 6, 7]),
+                ],
+            )
+        };
+        let (a, b) = (run(), run());
+        for (frame, (x, y)) in a.iter().zip(&b).enumerate() {
+            assert_eq!(
+                x, y,
+                "{flow:?}: frame {frame} differs between two identical sessions"
+            );
+        }
+        assert!(
+            a.iter().map(Vec::len).sum::<usize>() > 1000,
+            "{flow:?}: the session barely moved"
+        );
     }
-    assert!(
-        a.iter().map(Vec::len).sum::<usize>() > 1000,
-        "the session barely moved"
-    );
 }
 
 #[test]

@@ -97,7 +97,7 @@ fn constraint() -> impl Strategy<Value = Constraint<u32>> {
     ]
 }
 
-/// No flow, or one along any direction.
+/// No flow, or one along any direction, free or in layers.
 fn flow() -> impl Strategy<Value = Option<Flow>> {
     prop_oneof![
         2 => Just(None),
@@ -106,6 +106,8 @@ fn flow() -> impl Strategy<Value = Option<Flow>> {
             Just(Flow::up(0.0)),
             Just(Flow::right(40.0)),
             Just(Flow::left(f32::NAN)),
+            Just(Flow::down(60.0).in_layers()),
+            Just(Flow::right(40.0).in_layers()),
         ]
         .prop_map(Some),
     ]

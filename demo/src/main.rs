@@ -184,6 +184,13 @@ impl Demo {
         {
             config.flow = flowing.then(|| Flow::down(FLOW_GAP));
         }
+        if let Some(flow) = config.flow {
+            let mut layered = flow.layered();
+            if ui.checkbox(&mut layered, "in layers").changed() {
+                let free = Flow::down(FLOW_GAP);
+                config.flow = Some(if layered { free.in_layers() } else { free });
+            }
+        }
         if config != *self.engine.config() {
             self.engine.set_config(config);
         }

@@ -13,6 +13,7 @@ use crate::measure::worst_shortfall;
 /// The frames of a drag before the constraints must hold again.
 pub const GRACE: usize = 10;
 
+#[derive(Clone)]
 pub struct Drag {
     /// The node dragged: the one with the most edges.
     pub node: u32,

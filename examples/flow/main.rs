@@ -7,8 +7,9 @@
 //! normalised stress, frames and wall time to rest, and the step's p95; and writes
 //! `target/flow/<scene>_flow.svg` and `_plain.svg`.
 //!
-//! `cargo run --release --example flow -- [--gap G] [--repeat K] [--dot] [--drag]
-//! [--passes 1,2,4] [scene ...]`; the scene defaults to `crate_deps`.
+//! `cargo run --release --example flow -- [--gap G] [--repeat K] [--layers] [--dot]
+//! [--drag] [--passes 1,2,4] [scene ...]`; the scene defaults to `crate_deps`.
+//! - `--layers`: the flow in layers too (`Flow::in_layers`), written to `_layers.svg`.
 //! - `--repeat K`: each layout K times, by turns; the times are the medians.
 //! - `--dot`: Graphviz `dot` on the same graph (`apt-get install graphviz`): the same
 //!   figures and its wall time.
@@ -38,6 +39,7 @@ const FRAME: f32 = 1.0 / 60.0;
 struct Options {
     gap: f32,
     dot: bool,
+    layers: bool,
     drag: bool,
     passes: Vec<u32>,
     repeat: usize,
@@ -48,6 +50,7 @@ fn options() -> Options {
     let mut o = Options {
         gap: 60.0,
         dot: false,
+        layers: false,
         drag: false,
         passes: Vec::new(),
         repeat: 1,
@@ -59,6 +62,7 @@ fn options() -> Options {
         match arg.as_str() {
             "--gap" => o.gap = rest.next().and_then(|v| v.parse().ok()).expect("--gap G"),
             "--dot" => o.dot = true,
+            "--layers" => o.layers = true,
             "--repeat" => {
                 o.repeat = rest
                     .next()
@@ -170,12 +174,16 @@ fn main() {
         }
         // The two layouts by turns, `--repeat` times: the timings are medians, the
         // rest the same in every run.
-        let configs = [
+        let mut configs = vec![
             ("`stress()`", RapierLayoutConfig::stress(), "plain"),
             ("`stress()` + `Flow::down`", flow.clone(), "flow"),
         ];
-        let mut timings = [(Vec::new(), Vec::new()), (Vec::new(), Vec::new())];
-        let mut drags: [Vec<drag::Drag>; 2] = [Vec::new(), Vec::new()];
+        if o.layers {
+            let layered = RapierLayoutConfig::stress().with_flow(Flow::down(o.gap).in_layers());
+            configs.push(("`Flow::down(..).in_layers()`", layered, "layers"));
+        }
+        let mut timings = vec![(Vec::new(), Vec::new()); configs.len()];
+        let mut drags: Vec<Vec<drag::Drag>> = vec![Vec::new(); configs.len()];
         let mut last = Vec::new();
         for _ in 0..o.repeat {
             last.clear();
@@ -203,7 +211,7 @@ fn main() {
             let shown = if k == 0 {
                 format!("{:.2}", p95[0])
             } else {
-                format!("{:.2} ({:.2} ×)", p95[1], p95[1] / p95[0])
+                format!("{:.2} ({:.2} ×)", p95[k], p95[k] / p95[0])
             };
             let wall = median(&mut timings[k].1);
             row(name, label, f, *exempt, &frames.to_string(), wall, &shown);
@@ -233,16 +241,11 @@ fn main() {
             }
         }
         if o.drag {
-            let worst = drags[1]
-                .iter()
-                .map(|d| d.worst_after_grace)
-                .fold(0.0_f32, f32::max);
-            let any = drags[1].iter().map(|d| d.worst).fold(0.0_f32, f32::max);
             let mut p: Vec<Vec<f64>> = drags
                 .iter()
                 .map(|d| d.iter().map(|d| d.p95_ms).collect())
                 .collect();
-            let (plain, flowing) = (median(&mut p[0]), median(&mut p[1]));
+            let plain = median(&mut p[0]);
             let stages = |d: &[drag::Drag]| {
                 let (s, awake) = (d[d.len() / 2].stages_ms, d[d.len() / 2].awake);
                 format!(
@@ -250,14 +253,23 @@ fn main() {
                     s[0], s[1], s[2], s[3]
                 )
             };
-            println!(
-                "| {name} | drag of node {} for 180 frames | worst shortfall after frame {}: {worst:.2} (any frame: {any:.2}) | step p95 {flowing:.2} ms vs {plain:.2} ms without the flow ({:.2} ×); {} vs {} |",
-                drags[1][0].node,
-                drag::GRACE,
-                flowing / plain,
-                stages(&drags[1]),
-                stages(&drags[0]),
-            );
+            for k in 1..configs.len() {
+                let worst = drags[k]
+                    .iter()
+                    .map(|d| d.worst_after_grace)
+                    .fold(0.0_f32, f32::max);
+                let any = drags[k].iter().map(|d| d.worst).fold(0.0_f32, f32::max);
+                let flowing = median(&mut p[k]);
+                println!(
+                    "| {name} | {}: drag of node {} for 180 frames | worst shortfall after frame {}: {worst:.2} (any frame: {any:.2}) | step p95 {flowing:.2} ms vs {plain:.2} ms without the flow ({:.2} ×); {} vs {} |",
+                    configs[k].0,
+                    drags[k][0].node,
+                    drag::GRACE,
+                    flowing / plain,
+                    stages(&drags[k]),
+                    stages(&drags[0]),
+                );
+            }
         }
     }
 }

@@ -30,7 +30,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         if self.heat.state.halted && !self.constraints.is_empty() {
             let watch = Stopwatch::start(&self.forces.profile);
             let rounds = (self.config.solver.constraint_passes(), SETTLE_ROUNDS);
-            let parts = self.config.contacts.separates_disks() && world.contacts_enabled();
+            let parts = self.config.contacts.separates_disks()
+                && world.contacts_enabled()
+                && !self.constraints.holds_all_apart(world);
             let locks = std::mem::take(&mut self.forces.targets.locks);
             for _ in 0..HALT_ROUNDS {
                 self.constraints.settle(world, rounds, &locks);

@@ -8,7 +8,7 @@ use super::flow::FlowEdges;
 use super::local::Local;
 use super::{changed_slots, Row, Separation, HELD_WITHIN};
 use crate::config::Flow;
-use crate::input::constraints::Constraint;
+use crate::input::constraints::{usable_gap, Constraint};
 use crate::input::layout::LayoutExtras;
 use crate::input::scene::CanvasSceneInput;
 use crate::world::RapierSceneWorld;
@@ -94,14 +94,16 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
         let same = before.0 == self.separations && before.1 == self.rows;
         // With nothing to hold, no index is needed for the world's new size (a layout
         // without constraints indexes nothing per node added).
-        let none =
-            self.separations.is_empty() && self.rows.is_empty() && self.flow.separations.is_empty();
+        let none = self.separations.is_empty() && self.rows.is_empty() && self.flow.is_empty();
         if !flow_changed && same && (none || self.local.fits(world.slot_count())) {
             return None;
         }
         self.local.index(
-            self.separations.iter().chain(&self.flow.separations),
-            &self.rows,
+            self.separations
+                .iter()
+                .chain(&self.flow.separations)
+                .chain(&self.flow.order),
+            self.rows.iter().chain(&self.flow.rows),
             world.slot_count(),
         );
         changed_slots(&before.0, &self.separations, &mut edit);
@@ -118,6 +120,12 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
     /// Whether there is nothing to hold.
     pub(crate) fn is_empty(&self) -> bool {
         self.local.is_empty()
+    }
+
+    /// Whether a flow in layers keeps every body of `world` apart: the layout's disk
+    /// contacts would find no pair to part, and are not searched for.
+    pub(crate) fn holds_all_apart(&self, world: &RapierSceneWorld<N>) -> bool {
+        self.flow.holds_all_apart(world.slot_count())
     }
 
     /// The scene edges a flow leaves free, ascending.
@@ -145,14 +153,17 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
         self.violated.dedup();
         // The flow's, of which there are as many as edges, from the kept arrays (what
         // the world holds, caught up); a link's id past the host's separations is its
-        // place among the flow's.
+        // place among the flow's (its edges', then its layers' order, not reported).
         let host = self.separations.len();
         for c in &self.local.links {
             let Some(k) = (c.id as usize).checked_sub(host) else {
                 continue;
             };
+            let Some(&edge) = self.flow.edge_of.get(k) else {
+                continue;
+            };
             if self.local.shortfall(c) > HELD_WITHIN {
-                self.violated_edges.push(self.flow.edge_of[k]);
+                self.violated_edges.push(edge);
             }
         }
         self.violated_edges.sort_unstable();
@@ -181,7 +192,7 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
             return false;
         };
         match (constraint.gap(), &slots[..]) {
-            (Some(gap), &[first, second]) if gap.is_finite() && gap >= 0.0 => {
+            (Some(gap), &[first, second]) if usable_gap(gap) => {
                 self.separations.push(Separation {
                     first,
                     second,

@@ -9,14 +9,16 @@ use petgraph::algo::greedy_feedback_arc_set;
 use petgraph::graph::DiGraph;
 use serde::{Deserialize, Serialize};
 
-use super::{changed_slots, Separation};
+use super::layers::layers;
+use super::{changed_slots, Row, Separation};
 use crate::config::Flow;
 use crate::input::constraints::Axis;
 use crate::input::scene::CanvasSceneInput;
 use crate::world::RapierSceneWorld;
 
-/// A flow as compared between calls: its axis, whether reversed, its gap's bits.
-type FlowKey = (Axis, bool, u32);
+/// A flow as compared between calls: its axis, whether reversed, its gap's bits, whether
+/// in layers.
+type FlowKey = (Axis, bool, u32, bool);
 
 /// A flow's separations and what they were compiled from.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -25,6 +27,15 @@ pub(super) struct FlowEdges<N> {
     pub(super) separations: Vec<Separation>,
     /// The scene edge of each separation, in order.
     pub(super) edge_of: Vec<usize>,
+    /// In layers: a row per layer, and the separations that keep each layer's order.
+    #[serde(default)]
+    pub(super) rows: Vec<Row>,
+    #[serde(default)]
+    pub(super) order: Vec<Separation>,
+    /// In layers: how many bodies are in one. Where every body of the world is, the
+    /// layers keep them all apart, and the disk contacts are not needed.
+    #[serde(default)]
+    pub(super) layered: usize,
     /// Scene edges left free, ascending: self-loops and those that close a cycle.
     pub(super) exempt: Vec<usize>,
     /// The flow (its axis, whether reversed, its gap's bits) and the world (its rebuild
@@ -39,6 +50,9 @@ impl<N> Default for FlowEdges<N> {
         Self {
             separations: Vec::new(),
             edge_of: Vec::new(),
+            rows: Vec::new(),
+            order: Vec::new(),
+            layered: 0,
             exempt: Vec::new(),
             key: None,
             edges: Vec::new(),
@@ -59,7 +73,8 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
         edit: &mut Vec<u32>,
     ) -> bool {
         let Some(flow) = flow else {
-            changed_slots(&self.separations, &[], edit);
+            changed_slots(&self.all_separations(), &[], edit);
+            edit.extend(self.rows.iter().flat_map(|r| r.slots.iter().copied()));
             let changed = !self.separations.is_empty();
             *self = Self::default();
             return changed;
@@ -85,16 +100,51 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
             );
         }
         self.key = key;
-        let before = std::mem::take(&mut self.separations);
+        let before = (self.all_separations(), std::mem::take(&mut self.rows));
         self.compile(flow, world);
-        changed_slots(&before, &self.separations, edit);
-        before != self.separations
+        let after = self.all_separations();
+        changed_slots(&before.0, &after, edit);
+        for (rows, others) in [(&before.1, &self.rows), (&self.rows, &before.1)] {
+            for row in rows.iter().filter(|row| !others.contains(row)) {
+                edit.extend(&row.slots);
+            }
+        }
+        before.0 != after || before.1 != self.rows
     }
 
-    /// The separations of the edges in `self.edges` but the exempt ones, for `world`.
+    /// The edges' separations, then the layers' order.
+    fn all_separations(&self) -> Vec<Separation> {
+        self.separations
+            .iter()
+            .chain(&self.order)
+            .copied()
+            .collect()
+    }
+
+    /// The separations of the edges in `self.edges` but the exempt ones, for `world`;
+    /// in layers, the layers too.
     fn compile(&mut self, flow: Flow, world: &RapierSceneWorld<N>) {
         self.separations.clear();
         self.edge_of.clear();
+        // In layers, neighbouring layers far enough apart that no two bodies of them
+        // overlap (their outlines along the flow, and a quarter of the gap between).
+        let extent = |slot: u32, axis: usize| {
+            let (inner, round) = world.shape_at(slot as usize).inner_and_round();
+            [inner.x, inner.y][axis] + round
+        };
+        let (along, across) = match flow.axis() {
+            Axis::X => (0, 1),
+            Axis::Y => (1, 0),
+        };
+        let spacing = flow.gap() / 4.0;
+        let gap = if flow.layered() {
+            let largest = (0..world.slot_count() as u32)
+                .map(|s| extent(s, along))
+                .fold(0.0_f32, f32::max);
+            flow.gap().max(2.0 * largest + spacing)
+        } else {
+            flow.gap()
+        };
         let mut exempt = self.exempt.iter().peekable();
         for (i, (source, target)) in self.edges.iter().enumerate() {
             if exempt.next_if(|&&e| e == i).is_some() {
@@ -109,16 +159,50 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
                 first: first as u32,
                 second: second as u32,
                 axis: flow.axis(),
-                gap: flow.gap(),
+                gap,
             });
         }
+        self.rows.clear();
+        self.order.clear();
+        self.layered = 0;
+        if flow.layered() {
+            let ends: Vec<(u32, u32)> = self
+                .separations
+                .iter()
+                .map(|c| (c.first, c.second))
+                .collect();
+            let layered = layers(
+                world.slot_count(),
+                &ends,
+                (flow.axis(), gap),
+                spacing,
+                |s| extent(s, across),
+            );
+            (self.rows, self.order) = (layered.rows, layered.order);
+            self.layered = layered.bodies;
+        }
+    }
+
+    /// Whether there is nothing to hold: no edge's separation, no layer.
+    pub(super) fn is_empty(&self) -> bool {
+        self.separations.is_empty() && self.order.is_empty() && self.rows.is_empty()
+    }
+
+    /// Whether the layers keep every one of the world's `slot_count` bodies apart.
+    pub(super) fn holds_all_apart(&self, slot_count: usize) -> bool {
+        self.layered > 0 && self.layered == slot_count
     }
 }
 
 /// A flow and the world's generation as compared between calls.
 fn key(flow: Flow, generation: (u64, u64)) -> (FlowKey, (u64, u64)) {
     (
-        (flow.axis(), flow.order(false, true).0, flow.gap().to_bits()),
+        (
+            flow.axis(),
+            flow.order(false, true).0,
+            flow.gap().to_bits(),
+            flow.layered(),
+        ),
         generation,
     )
 }

@@ -10,6 +10,7 @@ use std::hash::Hash;
 use rapier2d::prelude::Vector;
 
 use super::order::topological;
+use super::sweep::SweepLog;
 use super::{index, Row, Separation};
 use crate::input::node_forces::AxisLock;
 use crate::world::{RapierSceneWorld, SlotsView};
@@ -58,6 +59,8 @@ pub(super) struct Local {
     pub(super) hot_list: Vec<u32>,
     /// Whether a projection wrote a body back since the world's changes were last read.
     pub(super) wrote: bool,
+    /// The bodies the sweeps moved (`sweep.rs`).
+    pub(super) sweep_log: SweepLog,
 }
 
 impl Local {
@@ -67,7 +70,7 @@ impl Local {
     pub(super) fn index<'a>(
         &mut self,
         separations: impl Iterator<Item = &'a Separation> + Clone,
-        rows: &[Row],
+        rows: impl Iterator<Item = &'a Row> + Clone,
         slot_count: usize,
     ) {
         // Nothing by the old local indices outlives them.
@@ -79,7 +82,7 @@ impl Local {
             separations
                 .clone()
                 .flat_map(|c| [c.first, c.second])
-                .chain(rows.iter().flat_map(|r| r.slots.iter().copied()))
+                .chain(rows.clone().flat_map(|r| r.slots.iter().copied()))
                 .filter(|&s| (s as usize) < slot_count),
         );
         self.slots.sort_unstable();

@@ -14,11 +14,13 @@ use crate::input::constraints::Axis;
 
 mod compile;
 mod flow;
+mod layers;
 mod local;
 mod order;
 mod passes;
 mod project;
 mod saved;
+mod sweep;
 
 pub(crate) use compile::Compiled;
 pub(crate) use saved::SavedConstraints;

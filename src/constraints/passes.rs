@@ -1,6 +1,6 @@
 //! The projection's passes on the constrained bodies' arrays (`local.rs`):
-//! Gauss–Seidel passes over the separations a hot body is in, a sweep each way over all
-//! of them, the rows on their lines; and how far the worst is from holding.
+//! Gauss–Seidel passes over the separations a hot body is in, the rows on their lines;
+//! and how far the worst is from holding. The sweep that follows is in `sweep.rs`.
 
 use super::local::{Link, Local};
 
@@ -57,44 +57,16 @@ impl Local {
         }
     }
 
-    /// Makes every separation hold where the bodies allow, whatever the passes left:
-    /// in order, a short separation's second body moves on along the axis; then in
-    /// reverse, its first body moves back. With the separations in a topological
-    /// order, each sweep carries a push through any chain at once (a dragged node
-    /// moves everything it pushes within the substep). Left short: separations on a
-    /// cycle (conflicting constraints), and those between bodies that do not give way.
-    pub(super) fn sweep(&mut self) {
-        for k in 0..self.links.len() {
-            let c = self.links[k];
-            self.push(c, c.b as usize, 1.0);
-        }
-        for k in (0..self.links.len()).rev() {
-            let c = self.links[k];
-            self.push(c, c.a as usize, -1.0);
-        }
-    }
-
-    /// Moves local body `l` of separation `c` by its shortfall, `sign` along the axis,
-    /// with the speed that closes the two taken out.
-    fn push(&mut self, c: Link, l: usize, sign: f32) {
-        let short = self.shortfall(&c);
-        if short <= 0.0 || self.inverse_mass[l][c.axis] == 0.0 {
-            return;
-        }
-        let closing =
-            (self.speeds[c.a as usize][c.axis] - self.speeds[c.b as usize][c.axis]).max(0.0);
-        self.shift(l, c.axis, sign * short, sign * closing);
-    }
-
     pub(super) fn shortfall(&self, c: &Link) -> f32 {
         c.gap - (self.points[c.b as usize][c.axis] - self.points[c.a as usize][c.axis])
     }
 
     /// Moves local body `l` by `by` along `axis` and adds `dv` to its speed along it,
     /// unless either would stop being finite.
-    fn shift(&mut self, l: usize, axis: usize, by: f32, dv: f32) {
+    pub(super) fn shift(&mut self, l: usize, axis: usize, by: f32, dv: f32) {
         let (p, v) = (self.points[l][axis] + by, self.speeds[l][axis] + dv);
         if p.is_finite() && v.is_finite() && (by != 0.0 || dv != 0.0) {
+            self.sweep_log.note(l, self.points[l], self.speeds[l]);
             self.points[l][axis] = p;
             self.speeds[l][axis] = v;
             self.heat(l);

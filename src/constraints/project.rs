@@ -13,8 +13,8 @@ use crate::world::RapierSceneWorld;
 const STALLED: f32 = 0.01;
 
 impl<N: Clone + Eq + Hash> Compiled<N> {
-    /// Projects every constraint onto `world`'s bodies: `passes` passes, the sweep, the
-    /// rows. A body's axis held by one of `locks` does not give way along it.
+    /// Projects every constraint onto `world`'s bodies: `passes` passes, the rows, the
+    /// sweep. A body's axis held by one of `locks` does not give way along it.
     pub(crate) fn project(
         &mut self,
         world: &mut RapierSceneWorld<N>,
@@ -29,8 +29,9 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
         self.local.scatter(world);
     }
 
-    /// `passes` passes over the separations a hot body is in, the sweep, then the rows
-    /// on their lines.
+    /// `passes` passes over the separations a hot body is in, the rows on their lines,
+    /// then the sweep (`sweep.rs`): the separations have the last word, so a flow's
+    /// edges hold after every substep, and a row a push crosses spreads until the next.
     fn round(&mut self, passes: usize) {
         let mut active = std::mem::take(&mut self.active);
         self.local.active_links(&mut active);
@@ -38,8 +39,8 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
             self.local.pass(&active, k % 2 == 1);
         }
         self.active = active;
-        self.local.sweep();
         self.local.line_up_rows();
+        self.local.sweep();
     }
 
     /// Projects every constraint onto `points` (by slot, `unit` world units each; a

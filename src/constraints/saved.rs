@@ -10,6 +10,7 @@ use serde::{Deserialize, Serialize};
 
 use super::flow::FlowEdges;
 use super::{Compiled, Row, Separation};
+use crate::input::constraints::usable_gap;
 
 /// The constraints a layout held in its last call.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -49,7 +50,7 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
     /// The constraints a restored layout compares its first call's with: those of the
     /// saved layout's last call.
     pub(crate) fn restored(saved: SavedConstraints<N>) -> Self {
-        let usable = |c: &Separation| c.gap.is_finite() && c.gap >= 0.0;
+        let usable = |c: &Separation| usable_gap(c.gap);
         let mut compiled = Self::default();
         compiled.primed = saved.primed;
         compiled.separations = saved.separations;
@@ -57,7 +58,7 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
         compiled.rows = saved.rows;
         let flow = saved.flow;
         let edges = flow.edges.len();
-        if flow.separations.iter().all(usable)
+        if flow.separations.iter().chain(&flow.order).all(usable)
             && flow.edge_of.len() == flow.separations.len()
             && flow.edge_of.iter().chain(&flow.exempt).all(|&e| e < edges)
         {

@@ -124,6 +124,12 @@ impl<N> Constraint<N> {
     }
 }
 
+/// Whether a separation's gap can be held: finite and not negative. What `try_step`
+/// refuses, `step` leaves out and a restored snapshot drops.
+pub(crate) fn usable_gap(gap: f32) -> bool {
+    gap.is_finite() && gap >= 0.0
+}
+
 #[cfg(test)]
 mod tests {
     use super::{Axis, Constraint};

@@ -6,6 +6,7 @@ use std::hash::Hash;
 
 use euclid::default::Point2D;
 
+use crate::input::constraints::usable_gap;
 use crate::input::layout::{IdHasher, LayoutExtras};
 use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
@@ -312,7 +313,7 @@ fn collect<N: Clone + Eq + Hash>(
                 node: node.clone(),
             });
         }
-        if let Some(gap) = constraint.gap().filter(|g| !(g.is_finite() && *g >= 0.0)) {
+        if let Some(gap) = constraint.gap().filter(|&g| !usable_gap(g)) {
             report!(LayoutError::InvalidConstraintGap { constraint: i, gap });
         }
     }

@@ -43,6 +43,10 @@ pub(crate) struct Forces<N> {
     rest_bias: RestBias,
     /// Where the calls' time went, while the host measures it.
     pub(crate) profile: Option<StepProfile>,
+    /// Whether the hard constraints keep every body apart this call (a flow in layers
+    /// with every body in a layer): the disk contacts would find no pair, and are not
+    /// searched for. Set before each call's substeps.
+    pub(crate) held_apart: bool,
     _ids: std::marker::PhantomData<fn() -> N>,
 }
 
@@ -57,6 +61,7 @@ impl<N> Default for Forces<N> {
             applied: false,
             rest_bias: RestBias::default(),
             profile: None,
+            held_apart: false,
             _ids: std::marker::PhantomData,
         }
     }
@@ -151,7 +156,8 @@ impl<N: Clone + Eq + Hash> Forces<N> {
             &mut self.sums.springs,
             &mut self.sums.forces,
         );
-        let separate = config.contacts.separates_disks() && world.contacts_enabled();
+        let separate =
+            config.contacts.separates_disks() && world.contacts_enabled() && !self.held_apart;
         self.combine(world, law, separate.then_some(dt));
         if separate {
             let watch = Stopwatch::start(&self.profile);

@@ -32,7 +32,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             let rounds = (self.config.solver.constraint_passes(), SETTLE_ROUNDS);
             let parts = self.config.contacts.separates_disks()
                 && world.contacts_enabled()
-                && !self.constraints.holds_all_apart(world);
+                && !(self.forces.targets.locks.is_empty()
+                    && self.constraints.holds_all_apart(self.config.flow, world));
             let locks = std::mem::take(&mut self.forces.targets.locks);
             for _ in 0..HALT_ROUNDS {
                 self.constraints.settle(world, rounds, &locks);

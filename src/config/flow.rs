@@ -66,13 +66,17 @@ impl Flow {
     /// This flow with the nodes in layers, the picture of Graphviz `dot` and other
     /// Sugiyama layouts, held live: each node on its layer's line across the flow
     /// (every edge goes at least a layer on; a node without an edge has a layer too),
-    /// the layers [`gap`](Self::gap) apart at least (more where the nodes are taller
-    /// than that along the flow), and each layer's nodes in an order that crosses few
-    /// edges (none on a tree), a quarter of the gap apart outline to outline. The
-    /// layers and their order are worked out when the edges or the nodes change; a
-    /// drag moves a node's whole layer along the flow and its neighbours aside. With
-    /// every node in a layer, no two can overlap, and the disk contacts are not
-    /// searched for.
+    /// the layers [`gap`](Self::gap) apart at least (or, where the tallest node along
+    /// the flow is taller than that, its height plus a quarter of the gap), and each
+    /// layer's nodes in an order that crosses few edges (none on a tree), a quarter of
+    /// the gap apart outline to outline. The layers and their order are worked out
+    /// when the edges or the nodes change; a drag moves a node's whole layer along the
+    /// flow and its neighbours aside. While every node is dynamic and no host
+    /// constraint fights the layers, the layers keep the nodes apart and the disk
+    /// contacts are not searched for; with a pinned or dragged node they run. The
+    /// layers' own rows and order are not reported in
+    /// [`violated_flow_edges`](crate::RapierLayout::violated_flow_edges), which lists
+    /// the edges.
     ///
     /// The trade: far fewer crossings on trees and tree-like graphs (none on a tree),
     /// a much higher stress (a layer's nodes side by side make a wide picture, and the

@@ -122,10 +122,15 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
         self.local.is_empty()
     }
 
-    /// Whether a flow in layers keeps every body of `world` apart: the layout's disk
-    /// contacts would find no pair to part, and are not searched for.
-    pub(crate) fn holds_all_apart(&self, world: &RapierSceneWorld<N>) -> bool {
-        self.flow.holds_all_apart(world.slot_count())
+    /// Whether `flow`, in layers, keeps every body of `world` apart as the world stands
+    /// (`flow.rs`), with no host constraint to fight it: then the disk contacts would
+    /// find no pair to part, and are not searched for. With a pinned or dragged node or
+    /// a host constraint, the contacts run.
+    pub(crate) fn holds_all_apart(&self, flow: Option<Flow>, world: &RapierSceneWorld<N>) -> bool {
+        flow.is_some_and(|flow| flow.layered())
+            && self.separations.is_empty()
+            && self.rows.is_empty()
+            && self.flow.holds_all_apart(world)
     }
 
     /// The scene edges a flow leaves free, ascending.

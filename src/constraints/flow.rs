@@ -27,13 +27,14 @@ pub(super) struct FlowEdges<N> {
     pub(super) separations: Vec<Separation>,
     /// The scene edge of each separation, in order.
     pub(super) edge_of: Vec<usize>,
-    /// In layers: a row per layer, and the separations that keep each layer's order.
+    /// In layers: a row per layer, and the separations that keep each layer's order
+    /// across the flow and each layer a gap beyond the one before.
     #[serde(default)]
     pub(super) rows: Vec<Row>,
     #[serde(default)]
     pub(super) order: Vec<Separation>,
-    /// In layers: how many bodies are in one. Where every body of the world is, the
-    /// layers keep them all apart, and the disk contacts are not needed.
+    /// In layers: how many bodies are in one (all the world's, when compiled: a body
+    /// without an edge has a layer too).
     #[serde(default)]
     pub(super) layered: usize,
     /// Scene edges left free, ascending: self-loops and those that close a cycle.
@@ -75,7 +76,7 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
         let Some(flow) = flow else {
             changed_slots(&self.all_separations(), &[], edit);
             edit.extend(self.rows.iter().flat_map(|r| r.slots.iter().copied()));
-            let changed = !self.separations.is_empty();
+            let changed = !self.is_empty();
             *self = Self::default();
             return changed;
         };
@@ -136,7 +137,7 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
             Axis::X => (0, 1),
             Axis::Y => (1, 0),
         };
-        let spacing = flow.gap() / 4.0;
+        let spacing = spacing(flow);
         let gap = if flow.layered() {
             let largest = (0..world.slot_count() as u32)
                 .map(|s| extent(s, along))
@@ -188,10 +189,19 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
         self.separations.is_empty() && self.order.is_empty() && self.rows.is_empty()
     }
 
-    /// Whether the layers keep every one of the world's `slot_count` bodies apart.
-    pub(super) fn holds_all_apart(&self, slot_count: usize) -> bool {
-        self.layered > 0 && self.layered == slot_count
+    /// Whether the layers keep every body of `world` apart: every body in a layer and
+    /// dynamic (a pinned or dragged body can hold two layers on one line, and nothing
+    /// would part what they leave). A push not yet settled may leave two layers closer
+    /// for a few substeps; at rest the layers hold.
+    pub(super) fn holds_all_apart(&self, world: &RapierSceneWorld<N>) -> bool {
+        let n = world.slot_count();
+        self.layered > 0 && self.layered == n && (0..n).all(|s| world.body_at(s).is_dynamic())
     }
+}
+
+/// In layers, how far apart two neighbours' outlines are across the flow.
+pub(super) fn spacing(flow: Flow) -> f32 {
+    flow.gap() / 4.0
 }
 
 /// A flow and the world's generation as compared between calls.

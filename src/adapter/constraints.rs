@@ -32,8 +32,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             let rounds = (self.config.solver.constraint_passes(), SETTLE_ROUNDS);
             let parts = self.config.contacts.separates_disks()
                 && world.contacts_enabled()
-                && !(self.forces.targets.locks.is_empty()
-                    && self.constraints.holds_all_apart(self.config.flow, world));
+                && !self
+                    .constraints
+                    .holds_all_apart(world, &self.forces.targets.locks);
             let locks = std::mem::take(&mut self.forces.targets.locks);
             for _ in 0..HALT_ROUNDS {
                 self.constraints.settle(world, rounds, &locks);

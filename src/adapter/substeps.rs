@@ -84,8 +84,7 @@ impl<N: Clone + Eq + Hash> Substeps<'_, N> {
         } = self;
         let solver = solver_settings(config);
         let passes = config.solver.constraint_passes();
-        forces.held_apart =
-            forces.targets.locks.is_empty() && constraints.holds_all_apart(config.flow, world);
+        forces.held_apart = constraints.holds_all_apart(world, &forces.targets.locks);
         let length_unit = positive_or(config.solver.length_unit, 1.0);
         let params = world.integration_parameters_mut();
         params.dt = plan.substep_dt;

@@ -6,7 +6,7 @@ use std::hash::Hash;
 
 use super::flow::FlowEdges;
 use super::local::Local;
-use super::{changed_slots, Row, Separation, HELD_WITHIN};
+use super::{changed_rows, changed_slots, Row, Separation, HELD_WITHIN};
 use crate::config::Flow;
 use crate::input::constraints::{usable_gap, Constraint};
 use crate::input::layout::LayoutExtras;
@@ -107,11 +107,7 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
             world.slot_count(),
         );
         changed_slots(&before.0, &self.separations, &mut edit);
-        for (rows, others) in [(&before.1, &self.rows), (&self.rows, &before.1)] {
-            for row in rows.iter().filter(|row| !others.contains(row)) {
-                edit.extend(&row.slots);
-            }
-        }
+        changed_rows(&before.1, &self.rows, &mut edit);
         edit.sort_unstable();
         edit.dedup();
         (primed && !edit.is_empty()).then_some(edit)
@@ -122,12 +118,12 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
         self.local.is_empty()
     }
 
-    /// Whether `flow`, in layers, keeps every body of `world` apart as the world stands
-    /// (`flow.rs`), with no host constraint to fight it: then the disk contacts would
-    /// find no pair to part, and are not searched for. With a pinned or dragged node or
-    /// a host constraint, the contacts run.
-    pub(crate) fn holds_all_apart(&self, flow: Option<Flow>, world: &RapierSceneWorld<N>) -> bool {
-        flow.is_some_and(|flow| flow.layered())
+    /// Whether a flow in layers keeps every body of `world` apart as the world stands
+    /// (`flow.rs`), with no host constraint and no axis lock (`locks`) to fight it:
+    /// then the disk contacts would find no pair to part, and are not searched for.
+    /// With a pinned or dragged node, a host constraint or a lock, the contacts run.
+    pub(crate) fn holds_all_apart<L>(&self, world: &RapierSceneWorld<N>, locks: &[L]) -> bool {
+        locks.is_empty()
             && self.separations.is_empty()
             && self.rows.is_empty()
             && self.flow.holds_all_apart(world)

@@ -10,7 +10,7 @@ use petgraph::graph::DiGraph;
 use serde::{Deserialize, Serialize};
 
 use super::layers::layers;
-use super::{changed_slots, Row, Separation};
+use super::{changed_rows, changed_slots, Row, Separation};
 use crate::config::Flow;
 use crate::input::constraints::Axis;
 use crate::input::scene::CanvasSceneInput;
@@ -33,10 +33,6 @@ pub(super) struct FlowEdges<N> {
     pub(super) rows: Vec<Row>,
     #[serde(default)]
     pub(super) order: Vec<Separation>,
-    /// In layers: how many bodies are in one (all the world's, when compiled: a body
-    /// without an edge has a layer too).
-    #[serde(default)]
-    pub(super) layered: usize,
     /// Scene edges left free, ascending: self-loops and those that close a cycle.
     pub(super) exempt: Vec<usize>,
     /// The flow (its axis, whether reversed, its gap's bits) and the world (its rebuild
@@ -53,7 +49,6 @@ impl<N> Default for FlowEdges<N> {
             edge_of: Vec::new(),
             rows: Vec::new(),
             order: Vec::new(),
-            layered: 0,
             exempt: Vec::new(),
             key: None,
             edges: Vec::new(),
@@ -75,7 +70,7 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
     ) -> bool {
         let Some(flow) = flow else {
             changed_slots(&self.all_separations(), &[], edit);
-            edit.extend(self.rows.iter().flat_map(|r| r.slots.iter().copied()));
+            changed_rows(&self.rows, &[], edit);
             let changed = !self.is_empty();
             *self = Self::default();
             return changed;
@@ -105,11 +100,7 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
         self.compile(flow, world);
         let after = self.all_separations();
         changed_slots(&before.0, &after, edit);
-        for (rows, others) in [(&before.1, &self.rows), (&self.rows, &before.1)] {
-            for row in rows.iter().filter(|row| !others.contains(row)) {
-                edit.extend(&row.slots);
-            }
-        }
+        changed_rows(&before.1, &self.rows, edit);
         before.0 != after || before.1 != self.rows
     }
 
@@ -137,7 +128,8 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
             Axis::X => (0, 1),
             Axis::Y => (1, 0),
         };
-        let spacing = spacing(flow);
+        // Across the flow, a quarter of the gap between neighbours' outlines.
+        let spacing = flow.gap() / 4.0;
         let gap = if flow.layered() {
             let largest = (0..world.slot_count() as u32)
                 .map(|s| extent(s, along))
@@ -165,7 +157,6 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
         }
         self.rows.clear();
         self.order.clear();
-        self.layered = 0;
         if flow.layered() {
             let ends: Vec<(u32, u32)> = self
                 .separations
@@ -180,7 +171,6 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
                 |s| extent(s, across),
             );
             (self.rows, self.order) = (layered.rows, layered.order);
-            self.layered = layered.bodies;
         }
     }
 
@@ -189,19 +179,16 @@ impl<N: Clone + Eq + Hash> FlowEdges<N> {
         self.separations.is_empty() && self.order.is_empty() && self.rows.is_empty()
     }
 
-    /// Whether the layers keep every body of `world` apart: every body in a layer and
-    /// dynamic (a pinned or dragged body can hold two layers on one line, and nothing
-    /// would part what they leave). A push not yet settled may leave two layers closer
-    /// for a few substeps; at rest the layers hold.
+    /// Whether the layers keep every body of `world` apart: compiled in layers (for this
+    /// world: the key holds its generation), so every body is in a layer (a body
+    /// without an edge has one too), and every body dynamic (a pinned or dragged body
+    /// can hold two layers on one line, and nothing would part what they leave). A
+    /// push not yet settled may leave two layers closer for a few substeps; at rest the
+    /// layers hold.
     pub(super) fn holds_all_apart(&self, world: &RapierSceneWorld<N>) -> bool {
-        let n = world.slot_count();
-        self.layered > 0 && self.layered == n && (0..n).all(|s| world.body_at(s).is_dynamic())
+        let layered = matches!(self.key, Some(((.., true), _)));
+        layered && (0..world.slot_count()).all(|s| world.body_at(s).is_dynamic())
     }
-}
-
-/// In layers, how far apart two neighbours' outlines are across the flow.
-pub(super) fn spacing(flow: Flow) -> f32 {
-    flow.gap() / 4.0
 }
 
 /// A flow and the world's generation as compared between calls.

@@ -20,8 +20,6 @@ const SWEEPS: usize = 8;
 pub(super) struct Layers {
     pub(super) rows: Vec<Row>,
     pub(super) order: Vec<Separation>,
-    /// The bodies in a layer.
-    pub(super) bodies: usize,
 }
 
 /// The layers of the `bodies` world slots under the edges `ends` (`(first, second)` by
@@ -56,7 +54,6 @@ pub(super) fn layers(
     let mut out = Layers {
         rows: Vec::new(),
         order: Vec::new(),
-        bodies,
     };
     let slot = |v: &usize| *v as u32;
     // Each layer a gap beyond the one before, whether or not an edge joins them (the

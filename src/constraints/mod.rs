@@ -52,6 +52,15 @@ fn index(axis: Axis) -> usize {
     }
 }
 
+/// Adds to `edit` the slots of the rows in one list and not the other.
+fn changed_rows(before: &[Row], after: &[Row], edit: &mut Vec<u32>) {
+    for (rows, others) in [(before, after), (after, before)] {
+        for row in rows.iter().filter(|row| !others.contains(row)) {
+            edit.extend(&row.slots);
+        }
+    }
+}
+
 /// Adds to `edit` the slots of the separations in one list and not the other.
 fn changed_slots(before: &[Separation], after: &[Separation], edit: &mut Vec<u32>) {
     let key = |c: &Separation| (c.first, c.second, c.axis as u8, c.gap.to_bits());

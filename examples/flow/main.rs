@@ -16,9 +16,11 @@
 //! - `--drag`: at rest, the busiest node dragged around a circle for 180 frames, with and
 //!   without the flow: the worst shortfall after the drag's first 10 frames, and the
 //!   step's p95.
-//! - `--passes`: the flow under each number of constraint passes per substep: the worst
-//!   shortfall of any frame, stress, frames to rest, the constraints' time a frame
-//!   (`StepProfile::constraints`) and the step's p95.
+//! - `--passes`: the flow (and with `--layers` the flow in layers) under each number of
+//!   constraint passes per substep: the worst shortfall of any frame, stress, crossings,
+//!   frames to rest, the constraints' time a frame (`StepProfile::constraints`) and the
+//!   step's p95; with `--drag`, the drag's worst shortfall, step p95 and constraints'
+//!   time a frame.
 
 use std::time::Instant;
 
@@ -146,29 +148,46 @@ fn main() {
         println!("| scene | layout | edges down by gap − 1 | least drop | exempt | overlaps | crossings | stress | frames | ms to rest | step p95 ms |");
         println!("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
     } else {
-        println!("| scene | passes | worst shortfall, any frame | stress | frames to rest | constraints ms a frame | step p95 ms |");
-        println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: |");
+        println!("| scene | flow | passes | worst shortfall, any frame | stress | crossings | frames to rest | constraints ms a frame | step p95 ms | drag: worst shortfall | drag: step p95 ms | drag: constraints ms a frame |");
+        println!(
+            "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+        );
     }
     for name in &o.scenes {
         let scene = load(name);
         if !o.passes.is_empty() {
-            for &passes in &o.passes {
-                let config = RapierLayoutConfig {
-                    solver: Solver {
-                        constraint_passes: passes,
-                        ..flow.solver
-                    },
-                    ..flow.clone()
-                };
-                let r = run(&scene, config, o.gap, true);
-                let worst = r.shortfall.iter().copied().fold(0.0_f32, f32::max);
-                let stress = Figures::of(&r.host.scene, o.gap, r.host.layout.flow_exempt_edges());
-                let profile = r.host.layout.profile().expect("profiling on");
-                let per_frame = profile.constraints.as_secs_f64() * 1e3 / r.frames as f64;
-                println!(
-                    "| {name} | {passes} | {worst:.2} | {:.4} | {} | {per_frame:.3} | {:.2} |",
-                    stress.stress, r.frames, r.p95_ms
-                );
+            let mut flows = vec![("free", flow.clone())];
+            if o.layers {
+                flows.push((
+                    "layers",
+                    RapierLayoutConfig::stress().with_flow(Flow::down(o.gap).in_layers()),
+                ));
+            }
+            for (kind, flow) in &flows {
+                for &passes in &o.passes {
+                    let config = RapierLayoutConfig {
+                        solver: Solver {
+                            constraint_passes: passes,
+                            ..flow.solver
+                        },
+                        ..flow.clone()
+                    };
+                    let mut r = run(&scene, config, o.gap, true);
+                    let worst = r.shortfall.iter().copied().fold(0.0_f32, f32::max);
+                    let f = Figures::of(&r.host.scene, o.gap, r.host.layout.flow_exempt_edges());
+                    let profile = r.host.layout.profile().expect("profiling on");
+                    let per_frame = profile.constraints.as_secs_f64() * 1e3 / r.frames as f64;
+                    let dragged = if o.drag {
+                        let d = drag::drag(&mut r.host, o.gap, FRAME);
+                        format!("{:.2} | {:.2} | {:.3}", d.worst, d.p95_ms, d.stages_ms[3])
+                    } else {
+                        "– | – | –".to_string()
+                    };
+                    println!(
+                        "| {name} | {kind} | {passes} | {worst:.2} | {:.4} | {} | {} | {per_frame:.3} | {:.2} | {dragged} |",
+                        f.stress, f.crossings, r.frames, r.p95_ms
+                    );
+                }
             }
             continue;
         }

@@ -11,6 +11,7 @@ use rapier2d::prelude::Vector;
 
 use super::order::topological;
 use super::sweep::SweepLog;
+use super::watch::Watch;
 use super::{index, Row, Separation};
 use crate::input::node_forces::AxisLock;
 use crate::world::{RapierSceneWorld, SlotsView};
@@ -61,6 +62,12 @@ pub(super) struct Local {
     pub(super) wrote: bool,
     /// The bodies the sweeps moved (`sweep.rs`).
     pub(super) sweep_log: SweepLog,
+    /// Each local body's separations, by place in `links` (`watch.rs`): those of body
+    /// `l` are `adjacent[adjacent_start[l]..adjacent_start[l + 1]]`.
+    pub(super) adjacent_start: Vec<u32>,
+    pub(super) adjacent: Vec<u32>,
+    /// The separations that can be short (`watch.rs`).
+    pub(super) watch: Watch,
 }
 
 impl Local {
@@ -121,6 +128,7 @@ impl Local {
                 .extend(row.slots.iter().map(|&s| at(s)).filter(|&l| l != NONE));
             self.rows.push((index(row.axis), start..self.members.len()));
         }
+        self.index_adjacent();
         self.kept = false;
     }
 
@@ -192,7 +200,11 @@ impl Local {
             Some(changed) if self.kept && self.local_of.len() == world.slot_count() => {
                 for &s in changed {
                     let l = self.local_of[s as usize];
-                    if l != NONE && self.read_body(l as usize, view) && hot {
+                    if l == NONE {
+                        continue;
+                    }
+                    self.watch.touch(l, self.slots.len());
+                    if self.read_body(l as usize, view) && hot {
                         self.heat(l as usize);
                     }
                 }
@@ -211,6 +223,7 @@ impl Local {
         self.free_mass.resize(n, [0.0; 2]);
         self.inverse_mass.resize(n, [0.0; 2]);
         let view = world.slots_view();
+        self.watch.watch_all();
         for l in 0..n {
             if self.read_body(l, view) && hot {
                 self.heat(l);
@@ -269,9 +282,15 @@ impl Local {
     /// Marks every local body hot (the settling at the cold stop visits every
     /// separation).
     pub(super) fn heat_all(&mut self) {
+        self.watch.watch_all();
         for l in 0..self.slots.len() {
             self.heat(l);
         }
+    }
+
+    /// How many bodies are indexed.
+    pub(super) fn points_count(&self) -> usize {
+        self.slots.len()
     }
 
     /// Whether the index was made for a world of `slot_count` slots.

@@ -21,6 +21,7 @@ mod passes;
 mod project;
 mod saved;
 mod sweep;
+mod watch;
 
 pub(crate) use compile::Compiled;
 pub(crate) use saved::SavedConstraints;

@@ -3,15 +3,32 @@
 //! and how far the worst is from holding. The sweep that follows is in `sweep.rs`.
 
 use super::local::{Link, Local};
+use super::watch::MOSTLY;
 
 impl Local {
     /// The separations with a hot end, in order (those a pass visits).
     pub(super) fn active_links(&self, active: &mut Vec<u32>) {
         active.clear();
-        active.extend((0..self.links.len() as u32).filter(|&k| {
-            let c = self.links[k as usize];
-            self.is_hot(c.a) || self.is_hot(c.b)
-        }));
+        if self.hot_list.len() * MOSTLY > self.points_count() {
+            active.extend((0..self.links.len() as u32).filter(|&k| {
+                let c = self.links[k as usize];
+                self.is_hot(c.a) || self.is_hot(c.b)
+            }));
+            return;
+        }
+        let mut bits = vec![0_u64; self.links.len().div_ceil(64)];
+        for &l in &self.hot_list {
+            for &k in self.links_of(l as usize) {
+                bits[k as usize / 64] |= 1 << (k % 64);
+            }
+        }
+        for (w, &word) in bits.iter().enumerate() {
+            let mut word = word;
+            while word != 0 {
+                active.push((w * 64) as u32 + word.trailing_zeros());
+                word &= word - 1;
+            }
+        }
     }
 
     /// How far the worst constraint that the bodies can still move toward holding is

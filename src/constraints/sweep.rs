@@ -59,10 +59,12 @@ impl Local {
         if self.links.is_empty() {
             return;
         }
+        self.seed_watch();
         self.sweep_log.start(self.points.len());
         self.sweep_once(false);
         if self.sweep_log.before.is_empty() {
             self.sweep_log.on = false;
+            self.keep_short();
             return;
         }
         // The first sweep's result aside, and its bodies back where they were.
@@ -85,20 +87,36 @@ impl Local {
                 self.speeds[l][axis] = 0.5 * (self.speeds[l][axis] + v[axis]);
             }
         }
+        self.keep_short();
     }
 
     /// One sweep: on along the order then back, or back first.
     fn sweep_once(&mut self, back_first: bool) {
+        let (full, count) = (self.watch.full, self.links.len());
         for turn in [back_first, !back_first] {
+            // Every separation, or the candidates (`watch.rs`), read again after each
+            // push, which may add some ahead.
             if turn {
-                for k in (0..self.links.len()).rev() {
-                    let c = self.links[k];
+                let mut k = count;
+                while let Some(j) = if full {
+                    k.checked_sub(1)
+                } else {
+                    self.watch.last_before(k)
+                } {
+                    let c = self.links[j];
                     self.push(c, c.a as usize, -1.0);
+                    k = j;
                 }
             } else {
-                for k in 0..self.links.len() {
-                    let c = self.links[k];
+                let mut k = 0;
+                while let Some(j) = if full {
+                    (k < count).then_some(k)
+                } else {
+                    self.watch.next_from(k)
+                } {
+                    let c = self.links[j];
                     self.push(c, c.b as usize, 1.0);
+                    k = j + 1;
                 }
             }
         }
@@ -110,10 +128,12 @@ impl Local {
     /// never had.
     fn push(&mut self, c: Link, l: usize, sign: f32) {
         let short = self.shortfall(&c);
-        if short <= 0.0 || self.inverse_mass[l][c.axis] == 0.0 {
+        // A shortfall that is not a number (a body off the finite range) moves nothing.
+        if short.is_nan() || short <= 0.0 || self.inverse_mass[l][c.axis] == 0.0 {
             return;
         }
         self.shift(l, c.axis, sign * short, 0.0);
+        self.watch_body(l);
         let (a, b) = (c.a as usize, c.b as usize);
         let (wa, wb) = (self.inverse_mass[a][c.axis], self.inverse_mass[b][c.axis]);
         let closing = (self.speeds[a][c.axis] - self.speeds[b][c.axis]).max(0.0);

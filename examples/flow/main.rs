@@ -144,6 +144,7 @@ fn main() {
     let dir = format!("{}/target/flow", env!("CARGO_MANIFEST_DIR"));
     std::fs::create_dir_all(&dir).expect("target/flow");
     let flow = RapierLayoutConfig::stress().with_flow(Flow::down(o.gap));
+    let layered = RapierLayoutConfig::stress().with_flow(Flow::down(o.gap).in_layers());
     if o.passes.is_empty() {
         println!("| scene | layout | edges down by gap − 1 | least drop | exempt | overlaps | crossings | stress | frames | ms to rest | step p95 ms |");
         println!("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
@@ -158,10 +159,7 @@ fn main() {
         if !o.passes.is_empty() {
             let mut flows = vec![("free", flow.clone())];
             if o.layers {
-                flows.push((
-                    "layers",
-                    RapierLayoutConfig::stress().with_flow(Flow::down(o.gap).in_layers()),
-                ));
+                flows.push(("layers", layered.clone()));
             }
             for (kind, flow) in &flows {
                 for &passes in &o.passes {
@@ -198,8 +196,7 @@ fn main() {
             ("`stress()` + `Flow::down`", flow.clone(), "flow"),
         ];
         if o.layers {
-            let layered = RapierLayoutConfig::stress().with_flow(Flow::down(o.gap).in_layers());
-            configs.push(("`Flow::down(..).in_layers()`", layered, "layers"));
+            configs.push(("`Flow::down(..).in_layers()`", layered.clone(), "layers"));
         }
         let mut timings = vec![(Vec::new(), Vec::new()); configs.len()];
         let mut drags: Vec<Vec<drag::Drag>> = vec![Vec::new(); configs.len()];

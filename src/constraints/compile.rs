@@ -22,9 +22,10 @@ pub(crate) struct Compiled<N> {
     /// A flow's edges.
     pub(super) flow: FlowEdges<N>,
     /// All of them by local index, as the projection holds them, and the separations a
-    /// projection's passes visit.
+    /// projection's passes visit (with the bits they are found on).
     pub(super) local: Local,
     pub(super) active: Vec<u32>,
+    pub(super) active_bits: Vec<u64>,
     /// Host constraints left out this call (a node the scene or world lacks, a bad gap).
     pub(crate) skipped: usize,
     /// For each host separation and row, its index in `extras.constraints`.
@@ -48,6 +49,7 @@ impl<N> Default for Compiled<N> {
             flow: FlowEdges::default(),
             local: Local::default(),
             active: Vec::new(),
+            active_bits: Vec::new(),
             skipped: 0,
             origin: Vec::new(),
             row_origin: Vec::new(),

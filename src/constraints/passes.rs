@@ -3,11 +3,12 @@
 //! and how far the worst is from holding. The sweep that follows is in `sweep.rs`.
 
 use super::local::{Link, Local};
-use super::watch::MOSTLY;
+use super::watch::{next_set, set, MOSTLY};
 
 impl Local {
-    /// The separations with a hot end, in order (those a pass visits).
-    pub(super) fn active_links(&self, active: &mut Vec<u32>) {
+    /// The separations with a hot end, in order (those a pass visits), found through
+    /// each hot body's separations on `bits` (kept between calls).
+    pub(super) fn active_links(&self, active: &mut Vec<u32>, bits: &mut Vec<u64>) {
         active.clear();
         if self.hot_list.len() * MOSTLY > self.points_count() {
             active.extend((0..self.links.len() as u32).filter(|&k| {
@@ -16,18 +17,17 @@ impl Local {
             }));
             return;
         }
-        let mut bits = vec![0_u64; self.links.len().div_ceil(64)];
+        bits.clear();
+        bits.resize(self.links.len().div_ceil(64), 0);
         for &l in &self.hot_list {
             for &k in self.links_of(l as usize) {
-                bits[k as usize / 64] |= 1 << (k % 64);
+                set(bits, k);
             }
         }
-        for (w, &word) in bits.iter().enumerate() {
-            let mut word = word;
-            while word != 0 {
-                active.push((w * 64) as u32 + word.trailing_zeros());
-                word &= word - 1;
-            }
+        let mut k = 0;
+        while let Some(j) = next_set(bits, k) {
+            active.push(j as u32);
+            k = j + 1;
         }
     }
 

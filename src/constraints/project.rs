@@ -34,7 +34,7 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
     /// edges hold after every substep, and a row a push crosses spreads until the next.
     fn round(&mut self, passes: usize) {
         let mut active = std::mem::take(&mut self.active);
-        self.local.active_links(&mut active);
+        self.local.active_links(&mut active, &mut self.active_bits);
         for k in 0..passes {
             self.local.pass(&active, k % 2 == 1);
         }

@@ -92,28 +92,20 @@ impl Local {
 
     /// One sweep: on along the order then back, or back first.
     fn sweep_once(&mut self, back_first: bool) {
-        let (full, count) = (self.watch.full, self.links.len());
+        let count = self.links.len();
         for turn in [back_first, !back_first] {
-            // Every separation, or the candidates (`watch.rs`), read again after each
-            // push, which may add some ahead.
+            // The candidates (`watch.rs`; every separation in a full sweep), read again
+            // after each push, which may add some ahead.
             if turn {
                 let mut k = count;
-                while let Some(j) = if full {
-                    k.checked_sub(1)
-                } else {
-                    self.watch.last_before(k)
-                } {
+                while let Some(j) = self.watch.last_before(k) {
                     let c = self.links[j];
                     self.push(c, c.a as usize, -1.0);
                     k = j;
                 }
             } else {
                 let mut k = 0;
-                while let Some(j) = if full {
-                    (k < count).then_some(k)
-                } else {
-                    self.watch.next_from(k)
-                } {
+                while let Some(j) = self.watch.next_from(k, count) {
                     let c = self.links[j];
                     self.push(c, c.b as usize, 1.0);
                     k = j + 1;

@@ -22,7 +22,7 @@ pub(super) struct Watch {
     /// Every separation is a candidate at the next sweep.
     all: bool,
     /// This sweep visits every separation; and whether because most bodies moved.
-    pub(super) full: bool,
+    full: bool,
     mostly: bool,
     /// Local bodies read changed from the world since the last sweep, once each, and
     /// by local index whether listed.
@@ -66,40 +66,55 @@ impl Watch {
         self.touched.clear();
     }
 
-    /// The first candidate at `k` or after.
-    pub(super) fn next_from(&self, k: usize) -> Option<usize> {
-        let mut w = k / 64;
-        let mut word = self.bits.get(w)? & (u64::MAX << (k % 64));
-        loop {
-            if word != 0 {
-                return Some(w * 64 + word.trailing_zeros() as usize);
-            }
-            w += 1;
-            word = *self.bits.get(w)?;
+    /// The first candidate at `k` or after, of `count` separations.
+    pub(super) fn next_from(&self, k: usize, count: usize) -> Option<usize> {
+        if self.full {
+            (k < count).then_some(k)
+        } else {
+            next_set(&self.bits, k)
         }
     }
 
     /// The last candidate before `k`.
     pub(super) fn last_before(&self, k: usize) -> Option<usize> {
-        if k == 0 {
-            return None;
-        }
-        let k = k - 1;
-        let mut w = k / 64;
-        let mut word = self.bits.get(w)? & (u64::MAX >> (63 - k % 64));
-        loop {
-            if word != 0 {
-                return Some(w * 64 + 63 - word.leading_zeros() as usize);
-            }
-            w = w.checked_sub(1)?;
-            word = self.bits[w];
+        if self.full {
+            k.checked_sub(1)
+        } else {
+            last_set_before(&self.bits, k)
         }
     }
 }
 
-/// Sets bit `k`.
-fn set(bits: &mut [u64], k: u32) {
+/// Sets bit `k` of `bits`.
+pub(super) fn set(bits: &mut [u64], k: u32) {
     bits[k as usize / 64] |= 1 << (k % 64);
+}
+
+/// The first bit of `bits` set at `k` or after.
+pub(super) fn next_set(bits: &[u64], k: usize) -> Option<usize> {
+    let mut w = k / 64;
+    let mut word = bits.get(w)? & (u64::MAX << (k % 64));
+    loop {
+        if word != 0 {
+            return Some(w * 64 + word.trailing_zeros() as usize);
+        }
+        w += 1;
+        word = *bits.get(w)?;
+    }
+}
+
+/// The last bit of `bits` set before `k`.
+fn last_set_before(bits: &[u64], k: usize) -> Option<usize> {
+    let k = k.checked_sub(1)?;
+    let mut w = k / 64;
+    let mut word = bits.get(w)? & (u64::MAX >> (63 - k % 64));
+    loop {
+        if word != 0 {
+            return Some(w * 64 + 63 - word.leading_zeros() as usize);
+        }
+        w = w.checked_sub(1)?;
+        word = bits[w];
+    }
 }
 
 impl Local {
@@ -168,10 +183,10 @@ impl Local {
         }
         for (k, c) in self.links.iter().enumerate() {
             let watched = self.watch.bits[k / 64] & (1 << (k % 64)) != 0;
+            let short = self.shortfall(c);
             debug_assert!(
-                watched || self.shortfall(c).is_nan() || self.shortfall(c) <= 0.0,
-                "separation {k} is {} short and the sweep would not visit it",
-                self.shortfall(c)
+                watched || short.is_nan() || short <= 0.0,
+                "separation {k} is {short} short and the sweep would not visit it"
             );
         }
     }
@@ -182,8 +197,8 @@ impl Local {
             return;
         }
         let (from, to) = (self.adjacent_start[l], self.adjacent_start[l + 1]);
-        for i in from..to {
-            set(&mut self.watch.bits, self.adjacent[i as usize]);
+        for &k in &self.adjacent[from as usize..to as usize] {
+            set(&mut self.watch.bits, k);
         }
     }
 
@@ -196,21 +211,12 @@ impl Local {
         }
         let mut short = std::mem::take(&mut self.watch.short);
         short.clear();
-        let short_at = |k: usize| self.shortfall(&self.links[k]) > 0.0;
-        if self.watch.full {
-            short.extend(
-                (0..self.links.len())
-                    .filter(|&k| short_at(k))
-                    .map(|k| k as u32),
-            );
-        } else {
-            let mut k = 0;
-            while let Some(j) = self.watch.next_from(k) {
-                if short_at(j) {
-                    short.push(j as u32);
-                }
-                k = j + 1;
+        let mut k = 0;
+        while let Some(j) = self.watch.next_from(k, self.links.len()) {
+            if self.shortfall(&self.links[j]) > 0.0 {
+                short.push(j as u32);
             }
+            k = j + 1;
         }
         self.watch.short = short;
     }
@@ -218,27 +224,24 @@ impl Local {
 
 #[cfg(test)]
 mod tests {
-    use super::Watch;
+    use super::{last_set_before, next_set, set};
 
     #[test]
     fn candidates_are_found_both_ways_across_words() {
-        let mut w = Watch {
-            bits: vec![0; 3],
-            ..Watch::default()
-        };
+        let mut bits = vec![0; 3];
         for k in [0, 63, 64, 130] {
-            super::set(&mut w.bits, k);
+            set(&mut bits, k);
         }
         let mut up = Vec::new();
         let mut k = 0;
-        while let Some(j) = w.next_from(k) {
+        while let Some(j) = next_set(&bits, k) {
             up.push(j);
             k = j + 1;
         }
         assert_eq!(up, vec![0, 63, 64, 130]);
         let mut down = Vec::new();
         let mut k = 192;
-        while let Some(j) = w.last_before(k) {
+        while let Some(j) = last_set_before(&bits, k) {
             down.push(j);
             k = j;
         }

@@ -177,7 +177,11 @@
 //! times as much for trajectories and spring lengths closer to a fine-timestep
 //! reference (`docs/tradeoff.md`, `cargo run --release --example tradeoff`).
 //!
-//! **Timelines, layers, rings, clusters?** Per-node [`NodeForces`] in
+//! **Groups drawn as boxes?** [`LayoutExtras::clusters`]: each [`Cluster`] keeps its
+//! members in a box no other node and no sibling box enters, nested by index;
+//! [`RapierLayout::cluster_bounds`] gives the boxes (`docs/clusters.md`).
+//!
+//! **Timelines, layers, rings, soft groups?** Per-node [`NodeForces`] in
 //! [`LayoutExtras::forces`]: a pull toward a target x or y, a ring, a group key
 //! ([`RapierLayoutConfig::groups`]) and a lock of one axis, all inside the physics, so
 //! they combine with springs, contacts, drags and throws. Strengths are d3-force's; to
@@ -197,6 +201,7 @@
 #![deny(missing_docs)]
 
 mod adapter;
+mod clusters;
 pub mod config;
 mod constraints;
 mod contacts;
@@ -223,6 +228,7 @@ pub use rapier2d;
 // errors and snapshots a host meets; the rest lives in the modules below.
 pub use adapter::{LayoutSnapshot, RapierLayout, RapierLayoutState};
 pub use config::{BodyKindPolicy, EdgeJoint, Flow, RapierLayoutConfig};
+pub use input::clusters::Cluster;
 pub use input::constraints::{Axis, Constraint};
 pub use input::layout::{DeltaMap, Layout, LayoutExtras, NodeMap, NodeSet};
 pub use input::node_forces::NodeForces;
@@ -240,6 +246,7 @@ pub use world::RapierSceneWorld;
 /// the shipped scene files, the topology hash and, with feature `petgraph`, where a
 /// graph without positions starts.
 pub mod scene {
+    pub use crate::input::clusters::{Cluster, DEFAULT_CLUSTER_PADDING};
     pub use crate::input::constraints::{Axis, Constraint};
     pub use crate::input::node_forces::{AxisLock, AxisTarget, NodeForces, RingTarget};
     #[cfg(feature = "petgraph")]

@@ -14,6 +14,7 @@ use common::FRAME;
 use graph_canvas_layout::config::Contacts;
 use graph_canvas_layout::config::TopologyUpdate;
 use graph_canvas_layout::scene::AxisLock;
+use graph_canvas_layout::scene::Cluster;
 use graph_canvas_layout::{Axis, Constraint, EdgeJoint, Flow, NodeForces, RapierLayoutConfig};
 use proptest::prelude::*;
 
@@ -97,6 +98,22 @@ fn constraint() -> impl Strategy<Value = Constraint<u32>> {
     ]
 }
 
+/// A cluster of the session's ids (bad paddings and parents too).
+fn cluster() -> impl Strategy<Value = Cluster<u32>> {
+    let padding = prop_oneof![
+        4 => prop_oneof![Just(0.0_f32), Just(10.0), Just(40.0)],
+        1 => prop_oneof![Just(-1.0_f32), Just(f32::NAN)],
+    ];
+    let parent = prop_oneof![3 => Just(None), 1 => (0_usize..5).prop_map(Some)];
+    (prop::collection::vec(0..IDS, 0..6), padding, parent).prop_map(|(members, p, parent)| {
+        let c = Cluster::new(members).with_padding(p);
+        match parent {
+            Some(i) => c.inside(i),
+            None => c,
+        }
+    })
+}
+
 /// No flow, or one along any direction, free or in layers.
 fn flow() -> impl Strategy<Value = Option<Flow>> {
     prop_oneof![
@@ -132,6 +149,7 @@ fn action() -> impl Strategy<Value = Action> {
         1 => (id.clone(), side(), side(), corner()).prop_map(|(i, w, h, c)| Action::Reshape(i, w, h, c)),
         1 => Just(Action::Resume),
         1 => constraint().prop_map(Action::Constrain),
+        1 => cluster().prop_map(Action::Group),
         6 => frame_time().prop_map(Action::Step),
     ]
 }
@@ -158,6 +176,8 @@ fn long_action() -> impl Strategy<Value = Action> {
         1 => Just(Action::Resume),
         1 => constraint().prop_map(Action::Constrain),
         1 => Just(Action::Unconstrain),
+        1 => cluster().prop_map(Action::Group),
+        1 => Just(Action::Ungroup),
         12 => frame_time().prop_map(Action::Step),
     ]
 }

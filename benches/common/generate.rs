@@ -90,6 +90,53 @@ pub fn random_graph(n: usize, e: usize, seed: u64) -> CanvasSceneInput<u32> {
     spiral(n, edges)
 }
 
+/// A planted partition (communities): `k` groups of `m` nodes each, every node
+/// joined to `inner` random members of its own group and, with chance one in
+/// `outer_every`, to one random node of another. Node `i` is in group `i / m`
+/// ([`community`]). Distinct edges, no self-loops.
+pub fn communities(
+    k: usize,
+    m: usize,
+    inner: usize,
+    outer_every: usize,
+    seed: u64,
+) -> CanvasSceneInput<u32> {
+    let mut rng = Rng(seed);
+    let n = k * m;
+    let mut seen = std::collections::HashSet::new();
+    let mut edges = Vec::new();
+    let mut add = |a: usize, b: usize, edges: &mut Vec<(usize, usize)>| {
+        if a != b && seen.insert((a.min(b), a.max(b))) {
+            edges.push((a, b));
+        }
+    };
+    for a in 0..n {
+        let group = a / m;
+        for _ in 0..inner {
+            add(a, group * m + rng.below(m), &mut edges);
+        }
+        if k > 1 && rng.below(outer_every.max(1)) == 0 {
+            let other = (group + 1 + rng.below(k - 1)) % k;
+            add(a, other * m + rng.below(m), &mut edges);
+        }
+    }
+    // Placed on the spiral in a random order, so a group is not a run of it.
+    let mut place: Vec<usize> = (0..n).collect();
+    for i in (1..n).rev() {
+        place.swap(i, rng.below(i + 1));
+    }
+    let mut scene = spiral(n, edges);
+    for node in &mut scene.nodes {
+        node.position = phyllotaxis(place[node.id as usize]);
+    }
+    scene
+}
+
+/// The group of node `id` in a [`communities`] scene of groups of `m`.
+pub fn community(id: u32, m: usize) -> usize {
+    id as usize / m
+}
+
 /// A random geometric graph, as `scenes/rgg_10000.json` was built: `n` points uniform in
 /// a square, each joined to its 3 nearest neighbours, the largest component kept and
 /// renumbered in a random order, placed on d3's spiral. A proxy for road networks and
@@ -188,8 +235,9 @@ pub fn random_geometric(n: usize, seed: u64) -> CanvasSceneInput<u32> {
     spiral(kept.len(), edges)
 }
 
-/// The generated scene a name stands for: `ba_n{N}_m{M}`, `random_n{N}_e{E}` or
-/// `rgg_n{N}` (seed 1).
+/// The generated scene a name stands for: `ba_n{N}_m{M}`, `random_n{N}_e{E}`,
+/// `rgg_n{N}` or `communities_k{K}_m{M}` (3 edges inside, one in four nodes joined
+/// outside; seed 1).
 pub fn by_name(name: &str) -> Option<CanvasSceneInput<u32>> {
     let number = |s: &str, prefix: char| s.strip_prefix(prefix)?.parse::<usize>().ok();
     let parts: Vec<&str> = name.split('_').collect();
@@ -197,6 +245,7 @@ pub fn by_name(name: &str) -> Option<CanvasSceneInput<u32>> {
         ["ba", n, m] => Some(barabasi_albert(number(n, 'n')?, number(m, 'm')?, 1)),
         ["random", n, e] => Some(random_graph(number(n, 'n')?, number(e, 'e')?, 1)),
         ["rgg", n] => Some(random_geometric(number(n, 'n')?, 1)),
+        ["communities", k, m] => Some(communities(number(k, 'k')?, number(m, 'm')?, 3, 4, 1)),
         _ => None,
     }
 }

@@ -5,6 +5,7 @@
 
 use std::time::Instant;
 
+use graph_canvas_layout::euclid::default::Box2D;
 use graph_canvas_layout::worker::LayoutWorker;
 use graph_canvas_layout::{
     CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, Layout, LayoutExtras, RapierLayout,
@@ -41,6 +42,15 @@ impl Engine {
                 layout: Box::new(RapierLayout::new(config)),
                 state: RapierLayoutState::default(),
             }
+        }
+    }
+
+    /// Each cluster's box after the last frame (none on the worker, which does not
+    /// hand them back).
+    pub fn cluster_bounds(&self) -> &[Box2D<f32>] {
+        match self {
+            Engine::Direct { layout, .. } => layout.cluster_bounds(),
+            Engine::Worker { .. } => &[],
         }
     }
 

@@ -3,6 +3,7 @@
 //! - drag a node with the left button and let go to throw it;
 //! - right-click a node to pin or unpin it;
 //! - click a node to select it, then shift-click another to add or remove the edge;
+//! - ctrl-click nodes to pick them and group them into a cluster (its box drawn);
 //! - the side panel adds and removes nodes, switches presets, joints and the
 //!   force-directed configuration, draws the nodes as label boxes ("node <id>") or
 //!   disks, and shows frame time, step time and convergence.
@@ -13,6 +14,7 @@
 //! after N frames, for unattended checks).
 
 mod engine;
+mod groups;
 
 use std::time::Instant;
 
@@ -38,6 +40,7 @@ struct Demo {
     engine: Engine,
     extras: LayoutExtras<u32>,
     selected: Option<u32>,
+    picked: groups::Picked,
     grabbed: Option<u32>,
     next_id: u32,
     last_frame: Instant,
@@ -62,6 +65,7 @@ impl Demo {
             scene,
             extras: LayoutExtras::default(),
             selected: None,
+            picked: groups::Picked::default(),
             grabbed: None,
             next_id,
             last_frame: Instant::now(),
@@ -232,9 +236,11 @@ impl Demo {
                 self.scene.nodes.retain(|n| n.id != s);
                 self.scene.edges.retain(|e| e.source != s && e.target != s);
                 self.extras.pinned.remove(&s);
+                self.picked.forget(s, &mut self.extras);
                 self.engine.remove_node(s);
             }
         }
+        self.picked.panel(ui, &mut self.extras);
         ui.separator();
         ui.label("drag: move and throw\nright-click: pin / unpin\nclick, then shift-click: add or remove an edge\nscroll: zoom, middle-drag: pan");
     }
@@ -274,7 +280,9 @@ impl Demo {
         if response.clicked() {
             let hit = pointer.and_then(|p| self.node_at(rect, p));
             let shift = ui.input(|i| i.modifiers.shift);
+            let ctrl = ui.input(|i| i.modifiers.command);
             match (shift, self.selected, hit) {
+                (_, _, Some(id)) if ctrl => self.picked.toggle(id),
                 (true, Some(a), Some(b)) if a != b => self.toggle_edge(a, b),
                 (_, _, hit) => self.selected = hit,
             }
@@ -307,6 +315,8 @@ impl Demo {
                 }
             }
         }
+        let bounds = self.engine.cluster_bounds();
+        groups::draw(&painter, bounds, |p| self.to_screen(rect, p));
         for n in &self.scene.nodes {
             let fill = if self.extras.pinned.contains(&n.id) {
                 egui::Color32::from_rgb(214, 39, 40)
@@ -316,7 +326,7 @@ impl Demo {
                 egui::Color32::from_rgb(31, 119, 180)
             };
             let c = self.to_screen(rect, n.position);
-            let selected = Some(n.id) == self.selected;
+            let selected = Some(n.id) == self.selected || self.picked.0.contains(&n.id);
             let outline = egui::Stroke::new(
                 if selected { 2.0 } else { 1.0 },
                 if selected {

@@ -14,6 +14,8 @@ pub enum Guide {
     Circle(Point2D<f32>, f32),
     VerticalLine(f32),
     HorizontalLine(f32),
+    /// A box (a cluster's), from its min to its max corner.
+    Box(Point2D<f32>, Point2D<f32>),
 }
 
 /// The default disk colour.
@@ -36,9 +38,13 @@ pub fn svg(
     let mut pts: Vec<Point2D<f32>> = scene.nodes.iter().map(|n| n.position).collect();
     pts.extend(trail.iter().copied());
     for guide in guides {
-        if let Guide::Circle(c, r) = *guide {
-            pts.push(Point2D::new(c.x - r, c.y - r));
-            pts.push(Point2D::new(c.x + r, c.y + r));
+        match *guide {
+            Guide::Circle(c, r) => {
+                pts.push(Point2D::new(c.x - r, c.y - r));
+                pts.push(Point2D::new(c.x + r, c.y + r));
+            }
+            Guide::Box(lo, hi) => pts.extend([lo, hi]),
+            _ => {}
         }
     }
     let (mut lo, mut hi) = (
@@ -83,6 +89,14 @@ pub fn svg(
                 writeln!(
                     out,
                     r#"<line x1="{x:.1}" y1="0" x2="{x:.1}" y2="{h:.0}" {style}/>"#
+                )
+            }
+            Guide::Box(a, b) => {
+                let ((x1, y1), (x2, y2)) = (at(a), at(b));
+                let (w, h) = (x2 - x1, y2 - y1);
+                writeln!(
+                    out,
+                    r#"<rect x="{x1:.1}" y="{y1:.1}" width="{w:.1}" height="{h:.1}" {style}/>"#
                 )
             }
             Guide::HorizontalLine(gy) => {

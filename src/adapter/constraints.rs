@@ -6,7 +6,11 @@
 use std::hash::Hash;
 
 use super::node_forces::hold_locked_axes;
+use euclid::default::Box2D;
+
 use super::RapierLayout;
+use crate::input::layout::LayoutExtras;
+use crate::input::scene::CanvasSceneInput;
 use crate::profile::Stopwatch;
 
 /// At the cold stop: the most rounds of constraint settling and overlap parting.
@@ -19,6 +23,34 @@ const SETTLE_ROUNDS: usize = 64;
 const PARTED: f32 = 0.01;
 
 impl<N: Clone + Eq + Hash> RapierLayout<N> {
+    /// Stage 4: compiles the host's constraints, a flow's edges and the clusters for
+    /// the world. Returns whether they changed (a disturbance: the slots they name are
+    /// reheated with their neighbourhoods).
+    pub(super) fn sync_constraints(
+        &mut self,
+        scene: &CanvasSceneInput<N>,
+        extras: &LayoutExtras<N>,
+    ) -> bool {
+        let Some(world) = self.world.as_ref() else {
+            return false;
+        };
+        let generation = (self.built.rebuilds, world.version());
+        let flow = self.config.flow;
+        let edits = [
+            self.constraints
+                .sync(flow, scene, extras, world, generation),
+            self.clusters.sync(&extras.clusters, world, generation),
+        ];
+        let mut disturbed = false;
+        for edit in edits.into_iter().flatten() {
+            disturbed = true;
+            self.heat
+                .spread
+                .touch_constraints(&edit, world.slot_count());
+        }
+        disturbed
+    }
+
     /// After the call's substeps: at the cold stop, settles the constraints and parts
     /// the overlaps they leave, by turns, until the parting moves nothing (at most
     /// [`HALT_ROUNDS`]); the constraints have the last word. Then notes which do not
@@ -27,7 +59,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let Some(world) = self.world.as_mut() else {
             return;
         };
-        if self.heat.state.halted && !self.constraints.is_empty() {
+        if self.heat.state.halted && !(self.constraints.is_empty() && self.clusters.is_empty()) {
             let watch = Stopwatch::start(&self.forces.profile);
             let rounds = (self.config.solver.constraint_passes(), SETTLE_ROUNDS);
             let parts = self.config.contacts.separates_disks()
@@ -38,12 +70,17 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             let locks = std::mem::take(&mut self.forces.targets.locks);
             for _ in 0..HALT_ROUNDS {
                 self.constraints.settle(world, rounds, &locks);
-                if !parts {
+                let boxed = self.clusters.project(world, &locks, (SETTLE_ROUNDS, None));
+                if !parts && boxed < PARTED {
                     break;
                 }
-                let moved = self.forces.part_overlaps(world);
+                let moved = if parts {
+                    self.forces.part_overlaps(world)
+                } else {
+                    0.0
+                };
                 hold_locked_axes(world, &locks);
-                if moved < PARTED {
+                if moved.max(boxed) < PARTED {
                     break;
                 }
             }
@@ -52,6 +89,46 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             watch.stop(&mut self.forces.profile, |p| &mut p.constraints);
         }
         self.constraints.check(world);
+    }
+
+    /// Each cluster's box as of the last call, index-aligned with that call's
+    /// [`LayoutExtras::clusters`]: its members' outlines (disks, or the boxes of
+    /// [`NodeShape::Rect`](crate::NodeShape::Rect) nodes) and its nested clusters' boxes,
+    /// grown by its padding, for the host to draw. A cluster left out as bad input, or
+    /// none of whose members has a body, gets an empty box at the origin
+    /// (`Box2D::zero()`); one whose bad members alone were left out gets the box of the
+    /// rest.
+    ///
+    /// # Example
+    /// ```
+    /// use graph_canvas_layout::euclid::default::Point2D;
+    /// use graph_canvas_layout::scene::Cluster;
+    /// use graph_canvas_layout::{CanvasEdge, CanvasNode, CanvasSceneInput, Layout, LayoutExtras,
+    ///     RapierLayout, RapierLayoutState};
+    /// let node = |i: u32| CanvasNode::new(i, Point2D::new(i as f32 * 30.0, 0.0)).with_radius(10.0);
+    /// let edges = (0..5_u32).map(|i| CanvasEdge::new(i, i + 1)).collect();
+    /// let mut scene = CanvasSceneInput::new((0..6).map(node).collect(), edges);
+    /// let mut layout = RapierLayout::default();
+    /// let (mut state, mut extras) = (RapierLayoutState::default(), LayoutExtras::default());
+    /// extras.clusters.push(Cluster::new(vec![0, 1, 2]).with_padding(8.0));
+    /// extras.clusters.push(Cluster::new(vec![3, 4, 5]).with_padding(8.0));
+    /// for _ in 0..600 {
+    ///     let deltas = layout.step(&scene, &mut state, 1.0 / 60.0, &Default::default(), &extras);
+    ///     scene.apply_deltas(&deltas);
+    ///     if layout.is_converged(&state) {
+    ///         break;
+    ///     }
+    /// }
+    /// let [a, b] = [layout.cluster_bounds()[0], layout.cluster_bounds()[1]];
+    /// let p = |k: usize| scene.nodes[k].position;
+    /// let inside = |k: usize| a.inflate(-9.99, -9.99).contains(p(k));
+    /// assert!((0..3).all(inside), "the members' disks are inside their box");
+    /// let outside = |k: usize| !a.inflate(9.99, 9.99).contains(p(k));
+    /// assert!((3..6).all(outside), "the other cluster's members are outside it");
+    /// assert!(a.intersection(&b).map_or(true, |i| i.area() <= 1.0), "{a:?} and {b:?} overlap");
+    /// ```
+    pub fn cluster_bounds(&self) -> &[Box2D<f32>] {
+        &self.clusters.bounds
     }
 
     /// The scene edges (indices into `scene.edges`) a [`Flow`](crate::config::Flow)

@@ -10,6 +10,7 @@ use euclid::default::{Point2D, Vector2D};
 
 use super::seating::Seating;
 use super::RapierLayout;
+use crate::clusters::Clusters;
 use crate::config::{BodyKindPolicy, EdgeJoint, RapierLayoutConfig, SpringModel, TopologyUpdate};
 use crate::constraints::Compiled;
 use crate::input::layout::{IdHasher, LayoutExtras};
@@ -21,6 +22,9 @@ use crate::world::bindings::{ColliderSpec, NodeAvatarBinding, SceneBodyKind};
 use crate::world::nodes::body_mass;
 use crate::world::rapier_joint::scaled_spring;
 use crate::world::RapierSceneWorld;
+
+/// Partings of the clusters' levels after each descent pass of a start layout, at most.
+const START_ROUNDS: usize = 8;
 
 impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// Brings the world's topology to the scene's. Returns whether the world's structure
@@ -90,9 +94,13 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         // The start holds the constraints as it descends.
         let mut held = Compiled::default();
         held.sync(self.config.flow, scene, extras, &world, (u64::MAX, 0));
-        let any = !held.is_empty();
+        let mut boxed = Clusters::for_start(&extras.clusters, &world);
+        let any = !held.is_empty() || !boxed.is_empty();
         let passes = self.config.solver.constraint_passes();
-        let mut hold = |xy: &mut [[f32; 2]], unit: f32| held.project_points(xy, unit, passes);
+        let mut hold = |xy: &mut [[f32; 2]], unit: f32| {
+            boxed.project_points(xy, unit, START_ROUNDS);
+            held.project_points(xy, unit, passes);
+        };
         let model = self.config.stress.map(|stress| {
             let constraints = StartConstraints {
                 hold: &mut hold,

@@ -35,6 +35,7 @@ use std::hash::Hash;
 
 use euclid::default::Vector2D;
 
+use crate::clusters::Clusters;
 use crate::config::RapierLayoutConfig;
 use crate::constraints::Compiled;
 use crate::input::layout::{DeltaMap, Layout, LayoutExtras};
@@ -125,6 +126,9 @@ pub struct RapierLayout<N> {
     /// The hard constraints and a flow's edges by slot: stage 4 compiles them, 6 holds
     /// them.
     constraints: Compiled<N>,
+    /// The clusters by slot and their boxes: stage 4 compiles them, 6 holds them, the
+    /// end of the call notes the boxes.
+    clusters: Clusters<N>,
     /// [`RapierLayout::set_pool_awake`].
     pool_awake: bool,
 }
@@ -169,6 +173,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             forces: Forces::default(),
             report: Report::default(),
             constraints: Compiled::default(),
+            clusters: Clusters::default(),
             pool_awake: true,
         }
     }
@@ -479,6 +484,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     ) -> DeltaMap<N> {
         let watch = Stopwatch::start(&self.forces.profile);
         let deltas = self.advance_untimed(scene, state, dt, extras, known);
+        let listed = extras.clusters.len();
+        self.clusters.note_bounds(self.world.as_ref(), listed);
         watch.stop(&mut self.forces.profile, |p| {
             p.calls += 1;
             &mut p.total
@@ -518,19 +525,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let mut disturbed = known.is_none() && self.sync_topology(scene, extras);
         // 4. Sync in.
         disturbed |= self.sync_host(scene, extras, plan.frame_dt, known);
-        if let Some(world) = self.world.as_ref() {
-            let generation = (self.built.rebuilds, world.version());
-            let flow = self.config.flow;
-            if let Some(edit) = self
-                .constraints
-                .sync(flow, scene, extras, world, generation)
-            {
-                disturbed = true;
-                self.heat
-                    .spread
-                    .touch_constraints(&edit, world.slot_count());
-            }
-        }
+        disturbed |= self.sync_constraints(scene, extras);
         if cold {
             // NOTE: after the sync, which flips pinned bodies and reads the forces.
             disturbed = self.settle_cold();
@@ -563,6 +558,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 forces: &mut self.forces,
                 drives: &self.host.drives,
                 constraints: &mut self.constraints,
+                clusters: &mut self.clusters,
                 pool_awake: self.pool_awake,
             };
             substeps.run(&plan, gravity, heat);

@@ -274,6 +274,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             },
             forces,
             constraints: Compiled::restored(snapshot.constraints),
+            clusters: Default::default(),
             // A setting of the host's, not of the layout's state.
             pool_awake: self.pool_awake,
             ..Self::new(RapierLayoutConfig::default())

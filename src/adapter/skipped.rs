@@ -107,7 +107,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         let counted = self.matching.bad_nodes
             + self.matching.topology_problems
             + self.forces.targets.problems
-            + self.constraints.skipped;
+            + self.constraints.skipped
+            + self.clusters.skipped();
         if counted > 0 || (scene.nodes.is_empty() && !scene.edges.is_empty()) {
             self.report.skipped = problems(scene, extras);
         } else {

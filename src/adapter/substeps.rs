@@ -11,6 +11,7 @@ use super::drag::{drive_kinematic_bodies, land_driven_bodies, stale_ccd_in, Driv
 use super::heat::FrameHeat;
 use super::node_forces::hold_locked_axes;
 use super::state::RapierLayoutState;
+use crate::clusters::Clusters;
 use crate::config::cooling::HeatLaw;
 use crate::config::{RapierLayoutConfig, SolverSettings};
 use crate::constraints::Compiled;
@@ -19,6 +20,16 @@ use crate::sanitize::positive_or;
 use crate::simulate::Forces;
 use crate::timestep::{fixed_timestep, StepPlan};
 use crate::world::RapierSceneWorld;
+
+/// Partings of the clusters' levels after each substep, at most (fewer when one moves
+/// nothing): boxes squeezed between a dragged box and their neighbours overlapped by 8
+/// units through a drag with 2, by 2.7 with 4, not at all with 8 (`docs/clusters.md`).
+const CLUSTER_ROUNDS: usize = 8;
+
+/// How far one parting moves two clusters' items that both give way, at most, as a
+/// share of the bodies' mean half size (2 units for disks of radius 16): they part over
+/// a few frames, without swinging into each other (`clusters/part.rs`).
+const CLUSTER_STEP: f32 = 0.125;
 
 /// The substeps of a call of frame time `dt`, and the timestep new joints are tuned
 /// for. Accuracy presets split every step further; an unusable `dt` is still one whole
@@ -67,6 +78,8 @@ pub(super) struct Substeps<'a, N> {
     pub(super) drives: &'a [Drive],
     /// The hard constraints, held after each step.
     pub(super) constraints: &'a mut Compiled<N>,
+    /// The clusters, parted after the constraints.
+    pub(super) clusters: &'a mut Clusters<N>,
     /// [`RapierLayout::set_pool_awake`].
     pub(super) pool_awake: bool,
 }
@@ -80,6 +93,7 @@ impl<N: Clone + Eq + Hash> Substeps<'_, N> {
             forces,
             drives,
             constraints,
+            clusters,
             pool_awake,
         } = self;
         let solver = solver_settings(config);
@@ -132,6 +146,8 @@ impl<N: Clone + Eq + Hash> Substeps<'_, N> {
                 forces.settle(world, plan.substep_dt);
                 let watch = Stopwatch::start(&forces.profile);
                 constraints.project(world, passes, &forces.targets.locks);
+                let parting = (CLUSTER_ROUNDS, Some(CLUSTER_STEP));
+                clusters.project(world, &forces.targets.locks, parting);
                 watch.stop(&mut forces.profile, |p| &mut p.constraints);
                 if !forces.targets.locks.is_empty() {
                     hold_locked_axes(world, &forces.targets.locks);

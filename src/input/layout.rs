@@ -5,6 +5,7 @@ use std::collections::{HashMap, HashSet};
 use euclid::default::Vector2D;
 use serde::{de::DeserializeOwned, Serialize};
 
+use crate::input::clusters::Cluster;
 use crate::input::constraints::Constraint;
 use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasSceneInput, CanvasViewport};
@@ -46,6 +47,11 @@ pub struct LayoutExtras<N> {
     /// ([`Constraint`]), held every substep, not pulled toward. A dragged or pinned
     /// node does not give way: its partners move. Default: empty.
     pub constraints: Vec<Constraint<N>>,
+    /// Groups of nodes kept in boxes of their own ([`Cluster`]), nested by index: no
+    /// other node and no sibling's box enters a cluster's box
+    /// ([`RapierLayout::cluster_bounds`](crate::RapierLayout::cluster_bounds)). Default:
+    /// empty.
+    pub clusters: Vec<Cluster<N>>,
 }
 
 impl<N> Default for LayoutExtras<N> {
@@ -55,6 +61,7 @@ impl<N> Default for LayoutExtras<N> {
             dragging: NodeSet::default(),
             forces: NodeMap::default(),
             constraints: Vec::new(),
+            clusters: Vec::new(),
         }
     }
 }

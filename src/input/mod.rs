@@ -5,6 +5,7 @@
 //! Nothing here touches rapier; the adapter reads these types and decides what the world
 //! models.
 
+pub(crate) mod clusters;
 pub(crate) mod constraints;
 pub(crate) mod layout;
 pub(crate) mod node_forces;

@@ -6,6 +6,7 @@ use std::hash::Hash;
 
 use euclid::default::Point2D;
 
+use crate::input::clusters::{bad_parent, usable, usable_padding, walk_members, Membership};
 use crate::input::constraints::usable_gap;
 use crate::input::layout::{IdHasher, LayoutExtras};
 use crate::input::node_forces::NodeForces;
@@ -112,6 +113,39 @@ pub enum LayoutError<N> {
         /// The gap the host gave.
         gap: f32,
     },
+    /// A cluster in [`LayoutExtras::clusters`](crate::LayoutExtras::clusters) names a
+    /// node that is not in the scene.
+    UnknownClusterMember {
+        /// Index of the cluster in `extras.clusters`.
+        cluster: usize,
+        /// The node that is missing.
+        node: N,
+    },
+    /// A cluster's padding is negative, NaN or infinite.
+    InvalidClusterPadding {
+        /// Index of the cluster in `extras.clusters`.
+        cluster: usize,
+        /// The padding the host gave.
+        padding: f32,
+    },
+    /// A cluster is nested in an index beyond the list, in itself, or in a chain of
+    /// parents that comes back to it.
+    InvalidClusterParent {
+        /// Index of the cluster in `extras.clusters`.
+        cluster: usize,
+        /// The parent index the host gave.
+        parent: usize,
+    },
+    /// A node is listed by two clusters that do not nest one in the other (a node
+    /// belongs to at most one cluster of each level).
+    NodeInTwoClusters {
+        /// The node.
+        node: N,
+        /// The cluster that listed it first.
+        first: usize,
+        /// The cluster that listed it again.
+        second: usize,
+    },
 }
 
 impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
@@ -173,6 +207,26 @@ impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
             LayoutError::InvalidConstraintGap { constraint, gap } => write!(
                 f,
                 "constraint {constraint} has an invalid gap {gap} (must be finite and >= 0)"
+            ),
+            LayoutError::UnknownClusterMember { cluster, node } => write!(
+                f,
+                "cluster {cluster} names node {node:?}, which is not in the scene"
+            ),
+            LayoutError::InvalidClusterPadding { cluster, padding } => write!(
+                f,
+                "cluster {cluster} has an invalid padding {padding} (must be finite and >= 0)"
+            ),
+            LayoutError::InvalidClusterParent { cluster, parent } => write!(
+                f,
+                "cluster {cluster} is nested in cluster {parent}, which is beyond the list or nested in it"
+            ),
+            LayoutError::NodeInTwoClusters {
+                node,
+                first,
+                second,
+            } => write!(
+                f,
+                "node {node:?} is in clusters {first} and {second}, which do not nest one in the other"
             ),
         }
     }
@@ -315,6 +369,45 @@ fn collect<N: Clone + Eq + Hash>(
         }
         if let Some(gap) = constraint.gap().filter(|&g| !usable_gap(g)) {
             report!(LayoutError::InvalidConstraintGap { constraint: i, gap });
+        }
+    }
+    for (i, cluster) in extras.clusters.iter().enumerate() {
+        if !usable_padding(cluster.padding()) {
+            report!(LayoutError::InvalidClusterPadding {
+                cluster: i,
+                padding: cluster.padding(),
+            });
+        }
+        if let Some(parent) = bad_parent(&extras.clusters, i) {
+            report!(LayoutError::InvalidClusterParent { cluster: i, parent });
+        }
+    }
+    if !extras.clusters.is_empty() {
+        let held = usable(&extras.clusters);
+        let mut clusters_found = Vec::new();
+        let index_of = |n: &N| first.get(n).copied();
+        walk_members(
+            &extras.clusters,
+            &held,
+            scene.nodes.len(),
+            index_of,
+            |c, node, m| {
+                clusters_found.push(match m {
+                    Membership::Kept(_) => return,
+                    Membership::Unknown => LayoutError::UnknownClusterMember {
+                        cluster: c,
+                        node: node.clone(),
+                    },
+                    Membership::Clash { other, .. } => LayoutError::NodeInTwoClusters {
+                        node: node.clone(),
+                        first: other,
+                        second: c,
+                    },
+                })
+            },
+        );
+        for problem in clusters_found {
+            report!(problem);
         }
     }
     found

@@ -89,6 +89,17 @@ impl ColliderSpec {
         }
     }
 
+    /// Half the width and half the height of the smallest axis-aligned box around the
+    /// shape (a disk's radius on both axes).
+    pub fn half_extents(&self) -> Vector2D<f32> {
+        match *self {
+            ColliderSpec::Circle { radius } => Vector2D::new(radius, radius),
+            ColliderSpec::Rect { half_extents } | ColliderSpec::RoundRect { half_extents, .. } => {
+                half_extents
+            }
+        }
+    }
+
     /// The radius of the smallest disk around the shape's centre that holds it.
     pub fn bounding_radius(&self) -> f32 {
         match *self {

@@ -7,7 +7,7 @@ use std::collections::{HashMap, HashSet};
 
 use graph_canvas_layout::config::EdgeWeight;
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
-use graph_canvas_layout::scene::AxisLock;
+use graph_canvas_layout::scene::{AxisLock, Cluster};
 use graph_canvas_layout::{
     CanvasNode, CanvasSceneInput, Constraint, DeltaMap, EdgeJoint, Layout, LayoutSnapshot,
     NodeForces, RapierLayout, RapierLayoutConfig, MAX_COORDINATE,
@@ -71,6 +71,11 @@ pub enum Action {
     Constrain(Constraint<u32>),
     /// The host drops every constraint.
     Unconstrain,
+    /// Adds a cluster (bad ones too: a node the scene lacks, a bad padding, a parent out
+    /// of range or in a cycle); past four, the oldest goes.
+    Group(Cluster<u32>),
+    /// The host drops every cluster.
+    Ungroup,
     /// Calls at 1/60 s until the layout rests (at most 600).
     Settle,
     /// The host saves the layout and carries on with it restored from the save (a
@@ -169,6 +174,13 @@ pub fn apply_action(host: &mut Host<u32>, action: &Action) {
             host.extras.constraints.push(c.clone());
         }
         Action::Unconstrain => host.extras.constraints.clear(),
+        Action::Group(ref c) => {
+            if host.extras.clusters.len() >= 4 {
+                host.extras.clusters.remove(0);
+            }
+            host.extras.clusters.push(c.clone());
+        }
+        Action::Ungroup => host.extras.clusters.clear(),
         Action::Throw(..) | Action::Settle | Action::Resume | Action::Step(_) => {}
     }
 }
@@ -202,6 +214,19 @@ pub fn check(
     // A node the layout models this call: a usable position and shape.
     let usable = |n: &CanvasNode<u32>| valid(n.position) && n.shape.is_valid();
     let ids: HashSet<u32> = before.nodes.iter().map(|n| n.id).collect();
+    let bounds = host.layout.cluster_bounds();
+    ensure_eq!(
+        bounds.len(),
+        host.extras.clusters.len(),
+        "a box for every listed cluster"
+    );
+    for (c, b) in bounds.iter().enumerate() {
+        let corners = [b.min.x, b.min.y, b.max.x, b.max.y];
+        ensure!(
+            corners.iter().all(|v| v.is_finite()) && b.min.x <= b.max.x && b.min.y <= b.max.y,
+            "cluster {c}: box {b:?} is not a finite box"
+        );
+    }
     for (id, d) in deltas {
         ensure!(
             d.x.is_finite() && d.y.is_finite(),

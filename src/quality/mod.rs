@@ -2,6 +2,8 @@
 //! how far a disturbance reached (displacement by hop distance). Used by the quality and
 //! feel examples and the tests; handy for hosts comparing layouts.
 
+mod clusters;
+
 use std::collections::HashMap;
 use std::hash::Hash;
 
@@ -12,6 +14,8 @@ use crate::graph::Graph;
 use crate::input::layout::IdHasher;
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
 use crate::world::bindings::ColliderSpec;
+
+pub use clusters::{cluster_violations, ClusterViolations};
 
 /// Each node's index in the scene's node list, by id.
 fn index_of<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> HashMap<&N, usize, IdHasher> {

@@ -1,0 +1,159 @@
+//! Clusters kept in boxes: a graph of communities laid out under `stress()` with one
+//! cluster per community, against the same graph without clusters. Prints a Markdown
+//! table, for each: frames and wall time to rest, the step's p95, normalised stress,
+//! overlapping disks and the clusters' violations at rest (members outside their box,
+//! other nodes inside it, sibling boxes overlapping, each by more than a unit); and
+//! writes `target/clusters/<scene>.svg` with the boxes drawn.
+//!
+//! `cargo run --release --example clusters -- [--repeat K] [--shuffled] [scene ...]`; a
+//! scene is `communities_k{K}_m{M}` (K groups of M nodes, `benches/common/generate.rs`),
+//! and defaults to `communities_k10_m50` and `communities_k100_m100`. `--shuffled` also
+//! runs K clusters of M nodes drawn regardless of the communities (node `i` in cluster
+//! `7919 i mod K`): clusters that do not follow the graph.
+
+use std::time::Instant;
+
+use graph_canvas_layout::euclid::default::Point2D;
+use graph_canvas_layout::quality::{self, ClusterViolations};
+use graph_canvas_layout::scene::Cluster;
+use graph_canvas_layout::{CanvasSceneInput, Layout, RapierLayoutConfig};
+
+#[path = "common/mod.rs"]
+mod common;
+
+use common::svg::{svg, Guide, PALETTE};
+use common::{load, percentile, Host};
+
+const FRAME: f32 = 1.0 / 60.0;
+
+/// One layout run to rest (at most 2,000 frames).
+struct Run {
+    host: Host,
+    frames: usize,
+    wall_ms: f64,
+    p95_ms: f64,
+}
+
+fn run(scene: &CanvasSceneInput<u32>, clusters: &[Cluster<u32>]) -> Run {
+    let mut host = Host::new(scene.clone(), RapierLayoutConfig::stress());
+    host.extras.clusters = clusters.to_vec();
+    let started = Instant::now();
+    let mut steps = Vec::new();
+    while steps.len() < 2_000 {
+        let step = Instant::now();
+        host.frame(FRAME);
+        steps.push(step.elapsed().as_secs_f64() * 1e3);
+        if host.layout.is_converged(&host.state) {
+            break;
+        }
+    }
+    let wall_ms = started.elapsed().as_secs_f64() * 1e3;
+    let frames = steps.len();
+    steps.sort_by(f64::total_cmp);
+    Run {
+        p95_ms: percentile(&steps, 0.95),
+        host,
+        frames,
+        wall_ms,
+    }
+}
+
+/// The community size a `communities_k{K}_m{M}` name gives.
+fn group_size(name: &str) -> Option<usize> {
+    name.rsplit('_').next()?.strip_prefix('m')?.parse().ok()
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+fn main() {
+    let mut args = std::env::args().skip(1).peekable();
+    let mut repeat = 1;
+    let mut shuffled = false;
+    let mut scenes = Vec::new();
+    while let Some(arg) = args.next() {
+        match arg.as_str() {
+            "--shuffled" => shuffled = true,
+            "--repeat" => {
+                repeat = args
+                    .next()
+                    .and_then(|v| v.parse().ok())
+                    .expect("--repeat K")
+            }
+            name => scenes.push(name.to_owned()),
+        }
+    }
+    if scenes.is_empty() {
+        scenes = vec!["communities_k10_m50".into(), "communities_k100_m100".into()];
+    }
+    let out = format!("{}/target/clusters", env!("CARGO_MANIFEST_DIR"));
+    std::fs::create_dir_all(&out).expect("target/clusters");
+    println!("| scene | layout | frames | ms to rest | step p95 ms | stress | overlaps | members outside | intruders | overlapping boxes | worst |");
+    println!("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+    for name in &scenes {
+        let scene = load(name);
+        let m = group_size(name).expect("a communities_k{K}_m{M} scene");
+        let groups = scene.nodes.len().div_ceil(m);
+        let clusters_by = |group: &dyn Fn(u32) -> usize| {
+            let mut members = vec![Vec::new(); groups];
+            for n in &scene.nodes {
+                members[group(n.id)].push(n.id);
+            }
+            members.into_iter().map(Cluster::new).collect::<Vec<_>>()
+        };
+        let mut kinds = vec![
+            ("`stress()`", Vec::new()),
+            ("`stress()` + clusters", clusters_by(&|id| id as usize / m)),
+        ];
+        if shuffled {
+            let shuffled = clusters_by(&|id| (7919 * id as usize) % groups);
+            kinds.push(("`stress()` + shuffled clusters", shuffled));
+        }
+        let mut runs: Vec<Vec<Run>> = kinds.iter().map(|_| Vec::new()).collect();
+        for _ in 0..repeat {
+            for (k, (_, list)) in kinds.iter().enumerate() {
+                runs[k].push(run(&scene, list));
+            }
+        }
+        for (k, (label, list)) in kinds.iter().enumerate() {
+            let r = &runs[k][0];
+            let scene = &r.host.scene;
+            let bounds = r.host.layout.cluster_bounds();
+            let v = if list.is_empty() {
+                ClusterViolations::default()
+            } else {
+                quality::cluster_violations(scene, list, bounds, 16.0, 1.0)
+            };
+            let stress = quality::normalized_stress(scene).unwrap_or(f64::NAN);
+            let wall = median(runs[k].iter().map(|r| r.wall_ms).collect());
+            let p95 = median(runs[k].iter().map(|r| r.p95_ms).collect());
+            println!(
+                "| {name} | {label} | {} | {wall:.0} | {p95:.2} | {stress:.4} | {} | {} | {} | {} | {:.2} |",
+                r.frames,
+                quality::overlapping_pairs(scene, 16.0, 1.0),
+                v.members_outside,
+                v.intruders,
+                v.overlapping_siblings,
+                v.worst
+            );
+            if k > 0 {
+                let guides: Vec<Guide> = bounds
+                    .iter()
+                    .map(|b| Guide::Box(Point2D::new(b.min.x, b.min.y), b.max))
+                    .collect();
+                let title = format!(
+                    "{name}: {label} ({} clusters; colour: community)",
+                    list.len()
+                )
+                .replace('`', "");
+                let colour = |id: u32| PALETTE[(id as usize / m) % PALETTE.len()];
+                let text = svg(scene, &title, &[], &guides, colour);
+                let kind = if k == 1 { "" } else { "_shuffled" };
+                let path = format!("{out}/{name}{kind}.svg");
+                std::fs::write(&path, text).unwrap_or_else(|e| panic!("{path}: {e}"));
+            }
+        }
+    }
+}

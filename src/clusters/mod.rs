@@ -1,0 +1,258 @@
+//! Clusters held in the physics: each one's box is its members' outlines grown by its
+//! padding (`boxes.rs`), so its members are inside by construction; what is held is
+//! that no other node and no sibling's box enters it. After each substep the levels are
+//! parted from the inside out (`part.rs`): within each cluster, its nested boxes and
+//! its own members; then the top level, where the boxes meet the nodes in no cluster.
+//! The host's list is compiled by world slot (`tree.rs`) when it or the world changes.
+//!
+//! A parting moves positions and stops the speed that pushed the bodies together, as a
+//! contact would; the boxes move whole, so a cluster keeps its inside as it is.
+
+mod boxes;
+mod part;
+mod tree;
+
+use std::hash::Hash;
+
+use euclid::default::{Box2D, Point2D};
+use rapier2d::prelude::Vector;
+
+use crate::input::clusters::Cluster;
+use crate::input::node_forces::AxisLock;
+use crate::world::RapierSceneWorld;
+use boxes::{is_empty, Bodies, Boxes};
+use part::{Ctx, Level, Moves};
+use tree::Tree;
+
+/// The host's clusters as held on the world, and their boxes as of the last call.
+#[derive(Clone, Debug)]
+pub(crate) struct Clusters<N> {
+    /// The list the tree was compiled from, and the world it was compiled for.
+    list: Vec<Cluster<N>>,
+    generation: (u64, u64),
+    tree: Tree,
+    bodies: Bodies,
+    boxes: Boxes,
+    moves: Moves,
+    level: Level,
+    /// Each cluster's box after the last call, for the host.
+    pub(crate) bounds: Vec<Box2D<f32>>,
+    /// Whether a call compiled them since the layout was made or restored.
+    primed: bool,
+}
+
+impl<N> Default for Clusters<N> {
+    fn default() -> Self {
+        Self {
+            list: Vec::new(),
+            generation: (0, 0),
+            tree: Tree::default(),
+            bodies: Bodies::default(),
+            boxes: Boxes::default(),
+            moves: Moves::default(),
+            level: Level::default(),
+            bounds: Vec::new(),
+            primed: false,
+        }
+    }
+}
+
+impl<N: Clone + Eq + Hash> Clusters<N> {
+    /// Compiles `clusters` for `world` (`generation`: its rebuild count and version)
+    /// when either changed. When the list changed (a disturbance), returns the slots of
+    /// the clusters that changed, which the heat stage reheats with their
+    /// neighbourhoods; the first compile after the layout was made or restored is none.
+    pub(crate) fn sync(
+        &mut self,
+        clusters: &[Cluster<N>],
+        world: &RapierSceneWorld<N>,
+        generation: (u64, u64),
+    ) -> Option<Vec<u32>> {
+        let primed = std::mem::replace(&mut self.primed, true);
+        let same = |a: Option<&Cluster<N>>, b: Option<&Cluster<N>>| match (a, b) {
+            (Some(a), Some(b)) => a.same_as(b),
+            (a, b) => a.is_none() && b.is_none(),
+        };
+        let same_list = self.list.len() == clusters.len()
+            && (0..clusters.len()).all(|c| same(self.list.get(c), clusters.get(c)));
+        if same_list && self.generation == generation {
+            return None;
+        }
+        let tree = Tree::compile(clusters, world);
+        let mut edit = Vec::new();
+        if !same_list && primed {
+            // Every member of a cluster added, removed or changed, before and after.
+            let slots = world.slot_count();
+            let changed = |c: usize| !same(self.list.get(c), clusters.get(c));
+            for c in (0..self.list.len().max(clusters.len())).filter(|&c| changed(c)) {
+                for t in [&self.tree, &tree] {
+                    if t.held.get(c).copied().unwrap_or(false) {
+                        t.for_each_slot(c, |s| edit.push(s as u32));
+                    }
+                }
+            }
+            edit.retain(|&s| (s as usize) < slots);
+            edit.sort_unstable();
+            edit.dedup();
+        }
+        self.tree = tree;
+        self.list = clusters.to_vec();
+        self.generation = generation;
+        (!same_list && primed).then_some(edit)
+    }
+
+    /// Memberships and clusters the last compile left out (bad input).
+    pub(crate) fn skipped(&self) -> usize {
+        self.tree.skipped
+    }
+
+    /// Whether no cluster is held.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.tree.is_empty()
+    }
+
+    /// Parts every level `rounds` times or until nothing moves, two items that both
+    /// give way at most `step` times the bodies' mean half size apart each time (`None`:
+    /// the whole way), and writes the moved bodies back, woken, stopped along the axis
+    /// they were parted on. A body whose axis one of `locks` holds does not give way
+    /// along it. Returns how far the last round moved anything.
+    pub(crate) fn project(
+        &mut self,
+        world: &mut RapierSceneWorld<N>,
+        locks: &[(u32, AxisLock, f32)],
+        (rounds, step): (usize, Option<f32>),
+    ) -> f32 {
+        if self.tree.is_empty() {
+            return 0.0;
+        }
+        self.read(world, locks);
+        let most = step.map_or(f32::INFINITY, |share| share * self.bodies.mean_half());
+        let slots = world.slot_count();
+        self.moves.clear(slots, self.tree.held.len());
+        let mut moved = 0.0;
+        for _ in 0..rounds {
+            self.boxes.make(&self.tree, &self.bodies);
+            moved = self.part_levels(most);
+            if moved == 0.0 {
+                break;
+            }
+        }
+        self.write(world);
+        moved
+    }
+
+    /// The clusters compiled for a new `world` whose start layout holds them
+    /// ([`project_points`](Self::project_points)): the bodies' outlines read now.
+    pub(crate) fn for_start(clusters: &[Cluster<N>], world: &RapierSceneWorld<N>) -> Self {
+        let mut start = Self::default();
+        start.sync(clusters, world, (u64::MAX, 0));
+        if !start.tree.is_empty() {
+            start.read(world, &[]);
+        }
+        start
+    }
+
+    /// Parts the clusters on `points` (by slot, `unit` world units each; a start
+    /// layout's positions before there are bodies to move), at most `rounds` times,
+    /// every body free to move.
+    pub(crate) fn project_points(&mut self, points: &mut [[f32; 2]], unit: f32, rounds: usize) {
+        let n = self.bodies.points.len();
+        if self.tree.is_empty() || points.len() != n || !(unit.is_finite() && unit > 0.0) {
+            return;
+        }
+        for (s, p) in points.iter().enumerate() {
+            self.bodies.points[s] = [p[0] * unit, p[1] * unit];
+        }
+        self.bodies.free.iter_mut().for_each(|f| *f = [true; 2]);
+        self.moves.clear(n, self.tree.held.len());
+        for _ in 0..rounds {
+            self.boxes.make(&self.tree, &self.bodies);
+            if self.part_levels(f32::INFINITY) == 0.0 {
+                break;
+            }
+        }
+        for &s in &self.moves.list {
+            let [x, y] = self.bodies.points[s as usize];
+            points[s as usize] = [x / unit, y / unit];
+        }
+    }
+
+    /// One parting of every level, from the inside out.
+    fn part_levels(&mut self, most: f32) -> f32 {
+        let mut ctx = Ctx {
+            tree: &self.tree,
+            bodies: &mut self.bodies,
+            boxes: &mut self.boxes,
+            moves: &mut self.moves,
+            most,
+        };
+        let mut moved = 0.0_f32;
+        for &c in &self.tree.inside_out {
+            let c = c as usize;
+            let own = self.tree.own.of(c).iter().copied();
+            moved = moved.max(self.level.part(self.tree.children.of(c), own, &mut ctx));
+        }
+        let clustered = &self.tree.clustered;
+        let loose = (0..clustered.len() as u32).filter(|&s| !clustered[s as usize]);
+        moved.max(self.level.part(&self.tree.top, loose, &mut ctx))
+    }
+
+    /// Reads every body's centre, outline and whether it gives way.
+    fn read(&mut self, world: &RapierSceneWorld<N>, locks: &[(u32, AxisLock, f32)]) {
+        let b = &mut self.bodies;
+        b.points.clear();
+        b.half.clear();
+        b.free.clear();
+        for s in 0..world.slot_count() {
+            let body = world.body_at(s);
+            let t = body.translation();
+            b.points.push([t.x, t.y]);
+            let half = world.shape_at(s).half_extents();
+            b.half.push([half.x, half.y]);
+            b.free.push([body.is_dynamic(); 2]);
+        }
+        for &(slot, axis, _) in locks {
+            if let Some(free) = b.free.get_mut(slot as usize) {
+                free[usize::from(axis == AxisLock::Y)] = false;
+            }
+        }
+    }
+
+    /// Writes the moved bodies back, woken, with their speed against the push stopped.
+    fn write(&mut self, world: &mut RapierSceneWorld<N>) {
+        for &s in &self.moves.list {
+            let s = s as usize;
+            let (p, pushed) = (self.bodies.points[s], self.moves.pushed[s]);
+            let body = world.body_at_mut(s);
+            let mut v = body.linvel();
+            for (axis, speed) in [&mut v.x, &mut v.y].into_iter().enumerate() {
+                if pushed[axis] {
+                    *speed = 0.0;
+                }
+            }
+            body.set_translation(Vector::new(p[0], p[1]), true);
+            body.set_linvel(v, true);
+        }
+    }
+
+    /// Notes each listed cluster's box from `world` (an empty box for one left out or
+    /// without members in the world), index-aligned with the host's list.
+    pub(crate) fn note_bounds(&mut self, world: Option<&RapierSceneWorld<N>>, listed: usize) {
+        self.bounds.clear();
+        if let Some(world) = world.filter(|_| !self.tree.is_empty()) {
+            self.read(world, &[]);
+            self.boxes.make(&self.tree, &self.bodies);
+            self.bounds.extend(self.boxes.bounds.iter().map(|&b| {
+                if is_empty(b) {
+                    Box2D::zero()
+                } else {
+                    Box2D::new(
+                        Point2D::new(b[0][0], b[0][1]),
+                        Point2D::new(b[1][0], b[1][1]),
+                    )
+                }
+            }));
+        }
+        self.bounds.resize(listed, Box2D::zero());
+    }
+}

@@ -579,7 +579,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             &self.config.rest,
             self.world.as_mut(),
             &mut self.matching,
-            (&mut self.forces, &mut self.constraints),
+            (&mut self.forces, &mut self.constraints, &mut self.clusters),
         );
         // 8. Rest.
         self.heat.track_rest(

@@ -14,9 +14,11 @@ use super::heat::Rest;
 use super::heat::{Heat, HeatStage};
 use super::matching::Matching;
 use super::RapierLayout;
+use crate::clusters::Clusters;
 use crate::config::RapierLayoutConfig;
 use crate::config::REST_TIME;
 use crate::constraints::{Compiled, SavedConstraints};
+use crate::input::clusters::Cluster;
 use crate::input::snapshot_error::{check_counters, SnapshotError};
 use crate::simulate::{Forces, SavedForces};
 use crate::world::saved::SavedWorld;
@@ -86,6 +88,11 @@ pub struct LayoutSnapshot<N> {
     /// first call after their restore takes the constraints as no edit).
     #[serde(default)]
     constraints: SavedConstraints<N>,
+    /// The clusters the last call held (absent from snapshots of earlier builds, or
+    /// before a first call: the first call after the restore takes the clusters as no
+    /// edit).
+    #[serde(default)]
+    clusters: Option<Vec<Cluster<N>>>,
 }
 
 impl<N> LayoutSnapshot<N> {
@@ -185,6 +192,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             cold_start: self.built.cold_start,
             world: self.world.as_ref().map(RapierSceneWorld::save),
             constraints: self.constraints.save(),
+            clusters: self.clusters.save(),
         }
     }
 
@@ -274,7 +282,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             },
             forces,
             constraints: Compiled::restored(snapshot.constraints),
-            clusters: Default::default(),
+            clusters: Clusters::restored(snapshot.clusters),
             // A setting of the host's, not of the layout's state.
             pool_awake: self.pool_awake,
             ..Self::new(RapierLayoutConfig::default())

@@ -8,6 +8,7 @@ use euclid::default::{Point2D, Vector2D};
 use rapier2d::prelude::Vector;
 
 use super::matching::{Matching, NO_SLOT};
+use crate::clusters::Clusters;
 use crate::config::RestDetection;
 use crate::constraints::Compiled;
 use crate::input::layout::{DeltaMap, IdHasher};
@@ -30,7 +31,7 @@ pub(super) struct FrameReport<N> {
 /// Reads the dynamic bodies that may have moved: those the world logged as changed, or
 /// every body the scene names when it logged too many to say. `awake_before` is
 /// rapier's count of simulated bodies before the step: when it was 0 and still is, and
-/// the constraints' projection moved no body (it moves them after rapier's step, and
+/// neither the constraints' projection nor the clusters' parting moved a body (they move them after rapier's step, and
 /// rapier counts a body it wakes that way only from its next step), nothing moved and
 /// no body needs reading. Records the moved slots in `matching` and catches the forces'
 /// and the constraints' kept bodies up.
@@ -40,7 +41,7 @@ pub(super) fn sync_out<N: Clone + Eq + Hash>(
     rest: &RestDetection,
     world: Option<&mut RapierSceneWorld<N>>,
     matching: &mut Matching<N>,
-    (forces, constraints): (&mut Forces<N>, &mut Compiled<N>),
+    (forces, constraints, clusters): (&mut Forces<N>, &mut Compiled<N>, &mut Clusters<N>),
 ) -> FrameReport<N> {
     matching.moved_mut().clear();
     let epsilon = rest.delta_epsilon.max(0.0);
@@ -54,7 +55,8 @@ pub(super) fn sync_out<N: Clone + Eq + Hash>(
     let Some(world) = world else {
         return report;
     };
-    if awake_before == 0 && world.awake_body_count() == 0 && !constraints.moved_bodies() {
+    let projected = clusters.take_moved() | constraints.moved_bodies();
+    if awake_before == 0 && world.awake_body_count() == 0 && !projected {
         return report;
     }
     // The bodies that may have moved since the last call: those the world reports

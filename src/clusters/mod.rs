@@ -5,8 +5,8 @@
 //! its own members; then the top level, where the boxes meet the nodes in no cluster.
 //! The host's list is compiled by world slot (`tree.rs`) when it or the world changes.
 //!
-//! A parting moves positions and stops the speed that pushed the bodies together, as a
-//! contact would; the boxes move whole, so a cluster keeps its inside as it is.
+//! A parting moves positions and stops the parted bodies' speed along its axis; the
+//! boxes move whole, so a cluster keeps its inside as it is.
 
 mod boxes;
 mod part;
@@ -39,6 +39,9 @@ pub(crate) struct Clusters<N> {
     pub(crate) bounds: Vec<Box2D<f32>>,
     /// Whether a call compiled them since the layout was made or restored.
     primed: bool,
+    /// Whether a parting moved a body since [`take_moved`](Self::take_moved): rapier
+    /// counts a body woken that way as awake only from its next step.
+    moved: bool,
 }
 
 impl<N> Default for Clusters<N> {
@@ -53,6 +56,7 @@ impl<N> Default for Clusters<N> {
             level: Level::default(),
             bounds: Vec::new(),
             primed: false,
+            moved: false,
         }
     }
 }
@@ -81,11 +85,14 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
         let tree = Tree::compile(clusters, world);
         let mut edit = Vec::new();
         if !same_list && primed {
-            // Every member of a cluster added, removed or changed, before and after.
+            // Every member of a cluster added, removed or changed, before and after, by
+            // the slots of this world (as a restored layout, which keeps no tree, finds
+            // them too).
             let slots = world.slot_count();
+            let before = Tree::compile(&self.list, world);
             let changed = |c: usize| !same(self.list.get(c), clusters.get(c));
             for c in (0..self.list.len().max(clusters.len())).filter(|&c| changed(c)) {
-                for t in [&self.tree, &tree] {
+                for t in [&before, &tree] {
                     if t.held.get(c).copied().unwrap_or(false) {
                         t.for_each_slot(c, |s| edit.push(s as u32));
                     }
@@ -101,20 +108,43 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
         (!same_list && primed).then_some(edit)
     }
 
+    /// The list the last call held, for a snapshot (`None` before a first call).
+    pub(crate) fn save(&self) -> Option<Vec<Cluster<N>>> {
+        self.primed.then(|| self.list.clone())
+    }
+
+    /// The clusters as a snapshot saved them: the first call compares its list with the
+    /// saved one, as the saved layout's next call would, and compiles for the world.
+    pub(crate) fn restored(saved: Option<Vec<Cluster<N>>>) -> Self {
+        let primed = saved.is_some();
+        Self {
+            list: saved.unwrap_or_default(),
+            // No world has this generation: the first call compiles.
+            generation: (u64::MAX, u64::MAX),
+            primed,
+            ..Self::default()
+        }
+    }
+
+    /// Whether a parting moved a body since the last call of this (which forgets it).
+    pub(crate) fn take_moved(&mut self) -> bool {
+        std::mem::take(&mut self.moved)
+    }
+
     /// Memberships and clusters the last compile left out (bad input).
     pub(crate) fn skipped(&self) -> usize {
         self.tree.skipped
     }
 
-    /// Whether no cluster is held.
+    /// Whether no held cluster has a body in it.
     pub(crate) fn is_empty(&self) -> bool {
         self.tree.is_empty()
     }
 
-    /// Parts every level `rounds` times or until nothing moves, two items that both
-    /// give way at most `step` times the bodies' mean half size apart each time (`None`:
-    /// the whole way), and writes the moved bodies back, woken, stopped along the axis
-    /// they were parted on. A body whose axis one of `locks` holds does not give way
+    /// Parts every level `rounds` times or until nothing moves (two free items that
+    /// nothing drives at most `step` times the bodies' mean half size apart each time;
+    /// `None`: the whole way out), and writes the moved bodies back, woken, their speed
+    /// along the axis they were parted on stopped. A body whose axis one of `locks` holds does not give way
     /// along it. Returns how far the last round moved anything.
     pub(crate) fn project(
         &mut self,
@@ -220,6 +250,7 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
 
     /// Writes the moved bodies back, woken, with their speed against the push stopped.
     fn write(&mut self, world: &mut RapierSceneWorld<N>) {
+        self.moved |= !self.moves.list.is_empty();
         for &s in &self.moves.list {
             let s = s as usize;
             let (p, pushed) = (self.bodies.points[s], self.moves.pushed[s]);

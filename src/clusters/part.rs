@@ -226,11 +226,19 @@ impl Ctx<'_> {
         if !(o[0] > 0.0 && o[1] > 0.0) {
             return 0.0;
         }
-        let axis = usize::from(o[1] < o[0]);
+        let gives = |k: usize| self.give(a, k) + self.give(b, k) > 0.0;
+        // The axis they overlap least, unless neither item gives way along it (an axis
+        // lock): then the other.
+        let axis = match (gives(0), gives(1)) {
+            (true, true) => usize::from(o[1] < o[0]),
+            (true, false) => 0,
+            (false, true) => 1,
+            (false, false) => return 0.0,
+        };
+        // `b` goes the way its centre lies from `a`'s (ties: b forward), by the overlap.
+        let centre = |x: Bounds| x[0][axis] + x[1][axis];
+        let (way, sign) = (o[axis], if centre(bb) >= centre(ba) { 1.0 } else { -1.0 });
         let (mut ga, mut gb) = (self.give(a, axis), self.give(b, axis));
-        if ga + gb <= 0.0 {
-            return 0.0;
-        }
         // An item a fixed one pushed this call passes the push on whole, as if fixed:
         // a dragged box moves a chain of boxes ahead of it. Only two free items that
         // nothing drives part a step at a time (see `Ctx::most`).
@@ -241,14 +249,7 @@ impl Ctx<'_> {
             _ => {}
         }
         let stepwise = ga > 0.0 && gb > 0.0 && driven == (false, false);
-        // `b` goes the way its centre lies from `a`'s (ties: b forward).
-        let centre = |x: Bounds| x[0][axis] + x[1][axis];
-        let sign = if centre(bb) >= centre(ba) { 1.0 } else { -1.0 };
-        let depth = if stepwise {
-            o[axis].min(self.most)
-        } else {
-            o[axis]
-        };
+        let depth = if stepwise { way.min(self.most) } else { way };
         let (da, db) = (depth * ga / (ga + gb), depth * gb / (ga + gb));
         self.shift(a, axis, -sign * da);
         self.shift(b, axis, sign * db);

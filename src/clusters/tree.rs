@@ -122,9 +122,9 @@ impl Tree {
         }
     }
 
-    /// Whether no cluster is held.
+    /// Whether no held cluster has a body in it (nothing to hold, no box to make).
     pub(super) fn is_empty(&self) -> bool {
-        self.top.is_empty()
+        self.own.items.is_empty()
     }
 
     /// Calls `each` with every slot of cluster `c`, nested clusters' included.

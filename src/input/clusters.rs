@@ -6,6 +6,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::input::validation::MAX_COORDINATE;
+
 /// The padding a cluster has unless told: its box stands this far (world units) beyond
 /// its members' outlines.
 pub const DEFAULT_CLUSTER_PADDING: f32 = 10.0;
@@ -32,8 +34,16 @@ pub const DEFAULT_CLUSTER_PADDING: f32 = 10.0;
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Cluster<N> {
     members: Vec<N>,
+    /// JSON writes a non-finite padding as `null`, which reads back as NaN (bad input
+    /// either way: the cluster is left out the same).
+    #[serde(deserialize_with = "padding_or_nan")]
     padding: f32,
     parent: Option<usize>,
+}
+
+/// A padding as read: `null` (what JSON made of a non-finite one) is NaN.
+fn padding_or_nan<'de, D: serde::Deserializer<'de>>(reader: D) -> Result<f32, D::Error> {
+    Option::<f32>::deserialize(reader).map(|p| p.unwrap_or(f32::NAN))
 }
 
 impl<N> Cluster<N> {
@@ -47,7 +57,8 @@ impl<N> Cluster<N> {
     }
 
     /// The same cluster with its box `padding` world units beyond its members' outlines
-    /// (a negative or non-finite padding is bad input).
+    /// (a negative or non-finite padding, or one beyond
+    /// [`MAX_COORDINATE`](crate::MAX_COORDINATE), is bad input).
     pub fn with_padding(mut self, padding: f32) -> Self {
         self.padding = padding;
         self
@@ -70,14 +81,17 @@ impl<N> Cluster<N> {
         self.padding
     }
 
-    /// Whether `other` is the same cluster to the bit (a NaN padding equals itself,
-    /// which `==` denies: a host passing the same bad list every call changes nothing).
+    /// Whether `other` holds the same: the same members and parent, and the same
+    /// padding to the bit or both unusable (a NaN padding equals itself, which `==`
+    /// denies, so a host passing the same bad list every call changes nothing; and a
+    /// cluster left out is left out whatever its bad padding).
     pub(crate) fn same_as(&self, other: &Self) -> bool
     where
         N: PartialEq,
     {
+        let (a, b) = (self.padding, other.padding);
         self.members == other.members
-            && self.padding.to_bits() == other.padding.to_bits()
+            && (a.to_bits() == b.to_bits() || !(usable_padding(a) || usable_padding(b)))
             && self.parent == other.parent
     }
 
@@ -87,9 +101,10 @@ impl<N> Cluster<N> {
     }
 }
 
-/// Whether a padding can be held: finite and not negative.
+/// Whether a padding can be held: from 0 to [`MAX_COORDINATE`] (a box grown beyond
+/// the range would push every node out of it).
 pub(crate) fn usable_padding(padding: f32) -> bool {
-    padding.is_finite() && padding >= 0.0
+    (0.0..=MAX_COORDINATE).contains(&padding)
 }
 
 /// The first bad parent link of `clusters[i]`, if any: its parent index out of range,
@@ -194,6 +209,20 @@ pub(crate) const NO_CLUSTER: u32 = u32::MAX;
 #[cfg(test)]
 mod tests {
     use super::{bad_parent, Cluster};
+
+    #[test]
+    fn a_cluster_with_a_non_finite_padding_saves_and_reads_back() {
+        for padding in [f32::NAN, f32::INFINITY, -1.0, 12.5] {
+            let cluster = Cluster::new(vec![1_u32, 2]).with_padding(padding).inside(3);
+            let text = serde_json::to_string(&cluster).unwrap();
+            let read: Cluster<u32> = serde_json::from_str(&text)
+                .unwrap_or_else(|e| panic!("padding {padding}: {text} does not read back: {e}"));
+            assert!(
+                read.same_as(&cluster),
+                "padding {padding}: {read:?} from {text}"
+            );
+        }
+    }
 
     #[test]
     fn parents_out_of_range_and_cycles_are_found() {

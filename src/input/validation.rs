@@ -121,7 +121,7 @@ pub enum LayoutError<N> {
         /// The node that is missing.
         node: N,
     },
-    /// A cluster's padding is negative, NaN or infinite.
+    /// A cluster's padding is negative, NaN, infinite or beyond [`MAX_COORDINATE`].
     InvalidClusterPadding {
         /// Index of the cluster in `extras.clusters`.
         cluster: usize,
@@ -214,7 +214,7 @@ impl<N: fmt::Debug> fmt::Display for LayoutError<N> {
             ),
             LayoutError::InvalidClusterPadding { cluster, padding } => write!(
                 f,
-                "cluster {cluster} has an invalid padding {padding} (must be finite and >= 0)"
+                "cluster {cluster} has an invalid padding {padding} (must be from 0 to {MAX_COORDINATE:e})"
             ),
             LayoutError::InvalidClusterParent { cluster, parent } => write!(
                 f,

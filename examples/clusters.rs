@@ -11,51 +11,30 @@
 //! runs K clusters of M nodes drawn regardless of the communities (node `i` in cluster
 //! `7919 i mod K`): clusters that do not follow the graph.
 
-use std::time::Instant;
-
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::quality::{self, ClusterViolations};
 use graph_canvas_layout::scene::Cluster;
-use graph_canvas_layout::{CanvasSceneInput, Layout, RapierLayoutConfig};
+use graph_canvas_layout::{CanvasSceneInput, RapierLayoutConfig};
 
 #[path = "common/mod.rs"]
 mod common;
 
 use common::svg::{svg, Guide, PALETTE};
-use common::{load, percentile, Host};
+use common::{load, Host, Timed};
 
 const FRAME: f32 = 1.0 / 60.0;
 
 /// One layout run to rest (at most 2,000 frames).
 struct Run {
     host: Host,
-    frames: usize,
-    wall_ms: f64,
-    p95_ms: f64,
+    timed: Timed,
 }
 
 fn run(scene: &CanvasSceneInput<u32>, clusters: &[Cluster<u32>]) -> Run {
     let mut host = Host::new(scene.clone(), RapierLayoutConfig::stress());
     host.extras.clusters = clusters.to_vec();
-    let started = Instant::now();
-    let mut steps = Vec::new();
-    while steps.len() < 2_000 {
-        let step = Instant::now();
-        host.frame(FRAME);
-        steps.push(step.elapsed().as_secs_f64() * 1e3);
-        if host.layout.is_converged(&host.state) {
-            break;
-        }
-    }
-    let wall_ms = started.elapsed().as_secs_f64() * 1e3;
-    let frames = steps.len();
-    steps.sort_by(f64::total_cmp);
-    Run {
-        p95_ms: percentile(&steps, 0.95),
-        host,
-        frames,
-        wall_ms,
-    }
+    let timed = host.settle_timed(FRAME, 2_000, |_| {});
+    Run { host, timed }
 }
 
 /// The community size a `communities_k{K}_m{M}` name gives.
@@ -127,11 +106,11 @@ fn main() {
                 quality::cluster_violations(scene, list, bounds, 16.0, 1.0)
             };
             let stress = quality::normalized_stress(scene).unwrap_or(f64::NAN);
-            let wall = median(runs[k].iter().map(|r| r.wall_ms).collect());
-            let p95 = median(runs[k].iter().map(|r| r.p95_ms).collect());
+            let wall = median(runs[k].iter().map(|r| r.timed.wall_ms).collect());
+            let p95 = median(runs[k].iter().map(|r| r.timed.p95_ms).collect());
             println!(
                 "| {name} | {label} | {} | {wall:.0} | {p95:.2} | {stress:.4} | {} | {} | {} | {} | {:.2} |",
-                r.frames,
+                r.timed.frames,
                 quality::overlapping_pairs(scene, 16.0, 1.0),
                 v.members_outside,
                 v.intruders,

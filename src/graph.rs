@@ -35,6 +35,47 @@ impl Hops for u32 {
     }
 }
 
+/// Lists of items by owner in compressed rows (the directed counterpart of [`Graph`]):
+/// owner `o`'s items are `items[start[o]..start[o + 1]]`, in the order they were given.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub(crate) struct Lists {
+    start: Vec<u32>,
+    items: Vec<u32>,
+}
+
+impl Lists {
+    /// Lists from `(owner, item)` pairs for `owners` owners, each list in pair order.
+    pub(crate) fn from_pairs(owners: usize, pairs: &[(u32, u32)]) -> Self {
+        let mut start = vec![0_u32; owners + 1];
+        for &(o, _) in pairs {
+            start[o as usize + 1] += 1;
+        }
+        for k in 0..owners {
+            start[k + 1] += start[k];
+        }
+        let mut next = start.clone();
+        let mut items = vec![0_u32; pairs.len()];
+        for &(o, item) in pairs {
+            items[next[o as usize] as usize] = item;
+            next[o as usize] += 1;
+        }
+        Self { start, items }
+    }
+
+    /// Whether no owner has an item.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.items.is_empty()
+    }
+
+    /// The list of `owner` (empty beyond the owners).
+    pub(crate) fn of(&self, owner: usize) -> &[u32] {
+        match (self.start.get(owner), self.start.get(owner + 1)) {
+            (Some(&a), Some(&b)) => &self.items[a as usize..b as usize],
+            _ => &[],
+        }
+    }
+}
+
 /// Undirected adjacency in compressed rows: the neighbours of node `i` are
 /// `targets[offsets[i]..offsets[i + 1]]`, in the order the edges were given.
 #[derive(Clone, Debug, Default)]

@@ -61,6 +61,13 @@ pub fn percentile(sorted: &[f64], q: f64) -> f64 {
     sorted[((sorted.len() - 1) as f64 * q).round() as usize]
 }
 
+/// A run to rest ([`Host::settle_timed`]): frames, wall time and the step's p95 (ms).
+pub struct Timed {
+    pub frames: usize,
+    pub wall_ms: f64,
+    pub p95_ms: f64,
+}
+
 /// A host canvas: its scene (positions included), the layout and what it passes in.
 pub struct Host {
     pub scene: CanvasSceneInput<u32>,
@@ -101,6 +108,29 @@ impl Host {
             }
         }
         budget
+    }
+
+    /// Frames of `dt` until `is_converged`, at most `budget`, each timed; `after` sees
+    /// the host after every frame. Returns the frames, the wall time and the step's p95.
+    pub fn settle_timed(&mut self, dt: f32, budget: usize, mut after: impl FnMut(&Host)) -> Timed {
+        let started = std::time::Instant::now();
+        let mut steps = Vec::new();
+        while steps.len() < budget {
+            let step = std::time::Instant::now();
+            self.frame(dt);
+            steps.push(step.elapsed().as_secs_f64() * 1e3);
+            after(self);
+            if self.layout.is_converged(&self.state) {
+                break;
+            }
+        }
+        let wall_ms = started.elapsed().as_secs_f64() * 1e3;
+        steps.sort_by(f64::total_cmp);
+        Timed {
+            frames: steps.len(),
+            wall_ms,
+            p95_ms: percentile(&steps, 0.95),
+        }
     }
 
     /// Where the scene has node `id`.

@@ -22,10 +22,8 @@
 //!   step's p95; with `--drag`, the drag's worst shortfall, step p95 and constraints'
 //!   time a frame.
 
-use std::time::Instant;
-
 use graph_canvas_layout::config::{Flow, Solver};
-use graph_canvas_layout::{CanvasSceneInput, Layout, RapierLayoutConfig};
+use graph_canvas_layout::{CanvasSceneInput, RapierLayoutConfig};
 
 #[path = "../common/mod.rs"]
 mod common;
@@ -33,7 +31,7 @@ mod dot;
 mod drag;
 mod measure;
 
-use common::{load, percentile, Host};
+use common::{load, Host};
 use measure::{worst_shortfall, Figures};
 
 const FRAME: f32 = 1.0 / 60.0;
@@ -101,29 +99,16 @@ struct Run {
 fn run(scene: &CanvasSceneInput<u32>, config: RapierLayoutConfig, gap: f32, profile: bool) -> Run {
     let mut host = Host::new(scene.clone(), config);
     host.layout.set_profiling(profile);
-    let started = Instant::now();
-    let (mut steps, mut shortfall) = (Vec::new(), Vec::new());
-    while steps.len() < 2_000 {
-        let step = Instant::now();
-        host.frame(FRAME);
-        steps.push(step.elapsed().as_secs_f64() * 1e3);
-        shortfall.push(worst_shortfall(
-            &host.scene,
-            gap,
-            host.layout.flow_exempt_edges(),
-        ));
-        if host.layout.is_converged(&host.state) {
-            break;
-        }
-    }
-    let wall_ms = started.elapsed().as_secs_f64() * 1e3;
-    let frames = steps.len();
-    steps.sort_by(f64::total_cmp);
+    let mut shortfall = Vec::new();
+    let timed = host.settle_timed(FRAME, 2_000, |host| {
+        let exempt = host.layout.flow_exempt_edges();
+        shortfall.push(worst_shortfall(&host.scene, gap, exempt));
+    });
     Run {
-        p95_ms: percentile(&steps, 0.95),
+        p95_ms: timed.p95_ms,
         host,
-        frames,
-        wall_ms,
+        frames: timed.frames,
+        wall_ms: timed.wall_ms,
         shortfall,
     }
 }

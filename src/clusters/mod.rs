@@ -77,8 +77,8 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
             (Some(a), Some(b)) => a.same_as(b),
             (a, b) => a.is_none() && b.is_none(),
         };
-        let same_list = self.list.len() == clusters.len()
-            && (0..clusters.len()).all(|c| same(self.list.get(c), clusters.get(c)));
+        let changed = |c: usize| !same(self.list.get(c), clusters.get(c));
+        let same_list = self.list.len() == clusters.len() && !(0..clusters.len()).any(changed);
         if same_list && self.generation == generation {
             return None;
         }
@@ -88,9 +88,7 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
             // Every member of a cluster added, removed or changed, before and after, by
             // the slots of this world (as a restored layout, which keeps no tree, finds
             // them too).
-            let slots = world.slot_count();
             let before = Tree::compile(&self.list, world);
-            let changed = |c: usize| !same(self.list.get(c), clusters.get(c));
             for c in (0..self.list.len().max(clusters.len())).filter(|&c| changed(c)) {
                 for t in [&before, &tree] {
                     if t.held.get(c).copied().unwrap_or(false) {
@@ -98,7 +96,6 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
                     }
                 }
             }
-            edit.retain(|&s| (s as usize) < slots);
             edit.sort_unstable();
             edit.dedup();
         }
@@ -143,9 +140,10 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
 
     /// Parts every level `rounds` times or until nothing moves (two free items that
     /// nothing drives at most `step` times the bodies' mean half size apart each time;
-    /// `None`: the whole way out), and writes the moved bodies back, woken, their speed
-    /// along the axis they were parted on stopped. A body whose axis one of `locks` holds does not give way
-    /// along it. Returns how far the last round moved anything.
+    /// `None`: by their whole overlap), and writes the moved bodies back, woken, their
+    /// speed along the axis they were parted on stopped. A body whose axis one of
+    /// `locks` holds does not give way along it. Returns how far the last round moved
+    /// anything.
     pub(crate) fn project(
         &mut self,
         world: &mut RapierSceneWorld<N>,
@@ -157,8 +155,17 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
         }
         self.read(world, locks);
         let most = step.map_or(f32::INFINITY, |share| share * self.bodies.mean_half());
-        let slots = world.slot_count();
-        self.moves.clear(slots, self.tree.held.len());
+        let moved = self.part_rounds(rounds, most);
+        self.write(world);
+        moved
+    }
+
+    /// Parts every level of the bodies as read, `rounds` times or until a round moves
+    /// nothing, free items that nothing drives at most `most` apart each time. Returns
+    /// how far the last round moved anything.
+    fn part_rounds(&mut self, rounds: usize, most: f32) -> f32 {
+        self.moves
+            .clear(self.bodies.points.len(), self.tree.held.len());
         let mut moved = 0.0;
         for _ in 0..rounds {
             self.boxes.make(&self.tree, &self.bodies);
@@ -167,7 +174,6 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
                 break;
             }
         }
-        self.write(world);
         moved
     }
 
@@ -194,13 +200,7 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
             self.bodies.points[s] = [p[0] * unit, p[1] * unit];
         }
         self.bodies.free.iter_mut().for_each(|f| *f = [true; 2]);
-        self.moves.clear(n, self.tree.held.len());
-        for _ in 0..rounds {
-            self.boxes.make(&self.tree, &self.bodies);
-            if self.part_levels(f32::INFINITY) == 0.0 {
-                break;
-            }
-        }
+        self.part_rounds(rounds, f32::INFINITY);
         for &s in &self.moves.list {
             let [x, y] = self.bodies.points[s as usize];
             points[s as usize] = [x / unit, y / unit];
@@ -248,7 +248,8 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
         }
     }
 
-    /// Writes the moved bodies back, woken, with their speed against the push stopped.
+    /// Writes the moved bodies back, woken, their speed along the axes they were parted
+    /// on stopped.
     fn write(&mut self, world: &mut RapierSceneWorld<N>) {
         self.moved |= !self.moves.list.is_empty();
         for &s in &self.moves.list {

@@ -6,7 +6,8 @@
 //! are the contacts' business, not this.
 
 use super::boxes::{overlap, union, Bodies, Bounds, Boxes, EMPTY};
-use super::tree::{Lists, Tree};
+use super::tree::Tree;
+use crate::graph::Lists;
 
 /// One item of a level: a cluster's box or a body's outline.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -114,20 +115,19 @@ impl Level {
             }
         }
         self.index(clusters, ctx.boxes);
-        if self.columns == 0 {
-            ctx.carry(clusters);
-            return moved;
-        }
-        for s in bodies_here {
-            let outline = ctx.bodies.outline(s as usize);
-            let [lo, hi] = [outline[0], outline[1]].map(|p| self.cell_of(p));
-            for row in lo[1]..=hi[1] {
-                for column in lo[0]..=hi[0] {
-                    let cell = row * self.columns + column;
-                    for &c in self.cells.of(cell) {
-                        if std::mem::replace(&mut self.seen[c as usize], s) != s {
-                            let by = ctx.part(Item::Cluster(c), Item::Body(s));
-                            moved = moved.max(by);
+        // No box to meet (columns 0): the bodies have nothing to part from.
+        if self.columns > 0 {
+            for s in bodies_here {
+                let outline = ctx.bodies.outline(s as usize);
+                let [lo, hi] = [outline[0], outline[1]].map(|p| self.cell_of(p));
+                for row in lo[1]..=hi[1] {
+                    for column in lo[0]..=hi[0] {
+                        let cell = row * self.columns + column;
+                        for &c in self.cells.of(cell) {
+                            if std::mem::replace(&mut self.seen[c as usize], s) != s {
+                                let by = ctx.part(Item::Cluster(c), Item::Body(s));
+                                moved = moved.max(by);
+                            }
                         }
                     }
                 }

@@ -5,43 +5,9 @@
 
 use std::hash::Hash;
 
+use crate::graph::Lists;
 use crate::input::clusters::{held_parent, usable, walk_members, Cluster, Membership, NO_CLUSTER};
 use crate::world::RapierSceneWorld;
-
-/// A slot or cluster list per cluster, stored one after the other.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub(super) struct Lists {
-    start: Vec<u32>,
-    items: Vec<u32>,
-}
-
-impl Lists {
-    /// Lists from `(owner, item)` pairs for `owners` owners, each list in pair order.
-    pub(super) fn from_pairs(owners: usize, pairs: &[(u32, u32)]) -> Self {
-        let mut start = vec![0_u32; owners + 1];
-        for &(o, _) in pairs {
-            start[o as usize + 1] += 1;
-        }
-        for k in 0..owners {
-            start[k + 1] += start[k];
-        }
-        let mut next = start.clone();
-        let mut items = vec![0_u32; pairs.len()];
-        for &(o, item) in pairs {
-            items[next[o as usize] as usize] = item;
-            next[o as usize] += 1;
-        }
-        Self { start, items }
-    }
-
-    /// The list of `owner`.
-    pub(super) fn of(&self, owner: usize) -> &[u32] {
-        match (self.start.get(owner), self.start.get(owner + 1)) {
-            (Some(&a), Some(&b)) => &self.items[a as usize..b as usize],
-            _ => &[],
-        }
-    }
-}
 
 /// The clusters of the last call, by world slot.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -124,7 +90,7 @@ impl Tree {
 
     /// Whether no held cluster has a body in it (nothing to hold, no box to make).
     pub(super) fn is_empty(&self) -> bool {
-        self.own.items.is_empty()
+        self.own.is_empty()
     }
 
     /// Calls `each` with every slot of cluster `c`, nested clusters' included.

@@ -4,23 +4,15 @@
 //! Separations on a cycle (conflicting host constraints) keep their given order after
 //! the rest.
 
+use crate::graph::Lists;
+
 /// The visiting order of `ends.len()` separations `(a, b)` between `n` bodies: the
 /// separations sorted by the topological ranks of `a` and then `b`, stable.
 pub(super) fn topological(n: usize, ends: &[(u32, u32)]) -> Vec<usize> {
-    let mut start = vec![0_u32; n + 1];
+    let next = Lists::from_pairs(n, ends);
     let mut indegree = vec![0_u32; n];
-    for &(a, b) in ends {
-        start[a as usize + 1] += 1;
+    for &(_, b) in ends {
         indegree[b as usize] += 1;
-    }
-    for l in 0..n {
-        start[l + 1] += start[l];
-    }
-    let mut fill = start.clone();
-    let mut next = vec![0_u32; ends.len()];
-    for &(a, b) in ends {
-        next[fill[a as usize] as usize] = b;
-        fill[a as usize] += 1;
     }
     let mut rank = vec![u32::MAX; n];
     let mut queue: Vec<u32> = (0..n as u32)
@@ -30,7 +22,7 @@ pub(super) fn topological(n: usize, ends: &[(u32, u32)]) -> Vec<usize> {
     while let Some(&l) = queue.get(head) {
         rank[l as usize] = head as u32;
         head += 1;
-        for &m in &next[start[l as usize] as usize..start[l as usize + 1] as usize] {
+        for &m in next.of(l as usize) {
             indegree[m as usize] -= 1;
             if indegree[m as usize] == 0 {
                 queue.push(m);

@@ -5,7 +5,7 @@ use std::hash::Hash;
 
 use euclid::default::Box2D;
 
-use super::index_of;
+use super::{index_of, outline};
 use crate::input::clusters::{held_parent, usable, walk_members, Cluster, NO_CLUSTER};
 use crate::input::scene::{CanvasNode, CanvasSceneInput};
 
@@ -82,7 +82,7 @@ pub fn cluster_violations<N: Clone + Eq + Hash>(
     };
     let (mut outside, mut inside, mut siblings) = (0, 0, 0);
     for (i, node) in scene.nodes.iter().enumerate() {
-        let outline = outline(node, default_radius);
+        let outline = outline_box(node, default_radius);
         let mut chain = Vec::new();
         let mut at = (innermost[i] != NO_CLUSTER).then_some(innermost[i] as usize);
         while let Some(c) = at {
@@ -113,13 +113,8 @@ pub fn cluster_violations<N: Clone + Eq + Hash>(
 }
 
 /// The box around `node`'s outline.
-fn outline<N>(node: &CanvasNode<N>, default_radius: f32) -> Box2D<f32> {
-    let radius = if node.radius > 0.0 {
-        node.radius
-    } else {
-        default_radius
-    };
-    let r = node.shape.collider(radius).half_extents();
+fn outline_box<N>(node: &CanvasNode<N>, default_radius: f32) -> Box2D<f32> {
+    let r = outline(node, default_radius).half_extents();
     Box2D::new(node.position - r, node.position + r)
 }
 

@@ -17,6 +17,16 @@ use crate::world::bindings::ColliderSpec;
 
 pub use clusters::{cluster_violations, ClusterViolations};
 
+/// The shape `node` is laid out with: its own radius, or `default_radius` for 0.
+fn outline<N>(node: &CanvasNode<N>, default_radius: f32) -> ColliderSpec {
+    let radius = if node.radius > 0.0 {
+        node.radius
+    } else {
+        default_radius
+    };
+    node.shape.collider(radius)
+}
+
 /// Each node's index in the scene's node list, by id.
 fn index_of<N: Clone + Eq + Hash>(scene: &CanvasSceneInput<N>) -> HashMap<&N, usize, IdHasher> {
     scene
@@ -119,15 +129,11 @@ pub fn overlapping_pairs<N: Clone + Eq + Hash>(
     default_radius: f32,
     tolerance: f32,
 ) -> usize {
-    let outline = |n: &CanvasNode<N>| {
-        let radius = if n.radius > 0.0 {
-            n.radius
-        } else {
-            default_radius
-        };
-        n.shape.collider(radius)
-    };
-    let shapes: Vec<ColliderSpec> = scene.nodes.iter().map(outline).collect();
+    let shapes: Vec<ColliderSpec> = scene
+        .nodes
+        .iter()
+        .map(|n| outline(n, default_radius))
+        .collect();
     let max_r = shapes
         .iter()
         .map(ColliderSpec::bounding_radius)

@@ -7,9 +7,12 @@
 //!
 //! `cargo run --release --example clusters -- [--repeat K] [--shuffled] [scene ...]`; a
 //! scene is `communities_k{K}_m{M}` (K groups of M nodes, `benches/common/generate.rs`),
-//! and defaults to `communities_k10_m50` and `communities_k100_m100`. `--shuffled` also
-//! runs K clusters of M nodes drawn regardless of the communities (node `i` in cluster
-//! `7919 i mod K`): clusters that do not follow the graph.
+//! clustered by its groups, or a shipped scene (`les_miserables`, `1138_bus`) clustered
+//! by the communities the Louvain method finds (`common/communities.rs`); it defaults to
+//! `communities_k10_m50`, `communities_k100_m100`, `les_miserables` and `1138_bus`.
+//! `--shuffled` also runs as many clusters of the same sizes drawn regardless of the
+//! communities (node `i` in cluster `7919 i mod K`): clusters that do not follow the
+//! graph.
 
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::quality::{self, ClusterViolations};
@@ -19,6 +22,7 @@ use graph_canvas_layout::{CanvasSceneInput, RapierLayoutConfig};
 #[path = "common/mod.rs"]
 mod common;
 
+use common::communities::louvain;
 use common::svg::{svg, Guide, PALETTE};
 use common::{load, Host, Timed};
 
@@ -65,31 +69,49 @@ fn main() {
         }
     }
     if scenes.is_empty() {
-        scenes = vec!["communities_k10_m50".into(), "communities_k100_m100".into()];
+        scenes = [
+            "communities_k10_m50",
+            "communities_k100_m100",
+            "les_miserables",
+            "1138_bus",
+        ]
+        .map(String::from)
+        .to_vec();
     }
+    let mut edits = Vec::new();
     let out = format!("{}/target/clusters", env!("CARGO_MANIFEST_DIR"));
     std::fs::create_dir_all(&out).expect("target/clusters");
     println!("| scene | layout | frames | ms to rest | step p95 ms | stress | overlaps | members outside | intruders | overlapping boxes | worst |");
     println!("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
     for name in &scenes {
         let scene = load(name);
-        let m = group_size(name).expect("a communities_k{K}_m{M} scene");
-        let groups = scene.nodes.len().div_ceil(m);
-        let clusters_by = |group: &dyn Fn(u32) -> usize| {
+        // Each node's community, by scene index.
+        let community: Vec<usize> = match group_size(name) {
+            Some(m) => scene.nodes.iter().map(|n| n.id as usize / m).collect(),
+            None => louvain(&scene),
+        };
+        let groups = community.iter().max().map_or(0, |&c| c + 1);
+        let clusters_by = |group: &dyn Fn(usize) -> usize| {
             let mut members = vec![Vec::new(); groups];
-            for n in &scene.nodes {
-                members[group(n.id)].push(n.id);
+            for (i, n) in scene.nodes.iter().enumerate() {
+                members[group(i)].push(n.id);
             }
             members.into_iter().map(Cluster::new).collect::<Vec<_>>()
         };
         let mut kinds = vec![
             ("`stress()`", Vec::new()),
-            ("`stress()` + clusters", clusters_by(&|id| id as usize / m)),
+            ("`stress()` + clusters", clusters_by(&|i| community[i])),
         ];
         if shuffled {
-            let shuffled = clusters_by(&|id| (7919 * id as usize) % groups);
+            let shuffled = clusters_by(&|i| (7919 * i) % groups);
             kinds.push(("`stress()` + shuffled clusters", shuffled));
         }
+        let community_of: std::collections::HashMap<u32, usize> = scene
+            .nodes
+            .iter()
+            .zip(&community)
+            .map(|(n, &c)| (n.id, c))
+            .collect();
         let mut runs: Vec<Vec<Run>> = kinds.iter().map(|_| Vec::new()).collect();
         for _ in 0..repeat {
             for (k, (_, list)) in kinds.iter().enumerate() {
@@ -127,12 +149,67 @@ fn main() {
                     list.len()
                 )
                 .replace('`', "");
-                let colour = |id: u32| PALETTE[(id as usize / m) % PALETTE.len()];
+                let colour = |id: u32| PALETTE[community_of[&id] % PALETTE.len()];
                 let text = svg(scene, &title, &[], &guides, colour);
                 let kind = if k == 1 { "" } else { "_shuffled" };
                 let path = format!("{out}/{name}{kind}.svg");
                 std::fs::write(&path, text).unwrap_or_else(|e| panic!("{path}: {e}"));
             }
         }
+        let clustered = &mut runs[1][0].host;
+        edits.push((name.clone(), widened(clustered, &kinds[1].1)));
+    }
+    println!();
+    println!("A changed cluster: cluster 0's padding widened from 10 to 40 at rest.");
+    println!();
+    println!("| scene | nodes moved > 1 unit | in clusters | frames to rest | moved farthest |");
+    println!("| --- | ---: | ---: | ---: | ---: |");
+    for (name, e) in edits {
+        println!(
+            "| {name} | {} of {} | {} of {} | {} | {:.1} |",
+            e.moved, e.nodes, e.clusters_moved, e.clusters, e.frames, e.farthest
+        );
+    }
+}
+
+/// What widening one cluster's padding moved.
+struct Edit {
+    nodes: usize,
+    moved: usize,
+    clusters: usize,
+    clusters_moved: usize,
+    frames: usize,
+    farthest: f32,
+}
+
+/// Widens cluster 0's padding from 10 to 40 in `host` (at rest with `list`) and runs
+/// it to rest again: how many nodes, and of how many clusters, moved more than a unit.
+fn widened(host: &mut Host, list: &[Cluster<u32>]) -> Edit {
+    let before: Vec<Point2D<f32>> = host.scene.nodes.iter().map(|n| n.position).collect();
+    host.extras.clusters[0] = list[0].clone().with_padding(40.0);
+    let frames = host.settle(FRAME, 2_000);
+    let cluster_of: std::collections::HashMap<u32, usize> = list
+        .iter()
+        .enumerate()
+        .flat_map(|(c, cl)| cl.members().iter().map(move |&id| (id, c)))
+        .collect();
+    let mut moved = 0;
+    let mut touched = std::collections::BTreeSet::new();
+    let mut farthest = 0.0_f32;
+    for (node, was) in host.scene.nodes.iter().zip(&before) {
+        let d = (node.position - *was).length();
+        farthest = farthest.max(d);
+        if d > 1.0 {
+            moved += 1;
+            touched.extend(cluster_of.get(&node.id).copied());
+        }
+    }
+    Edit {
+        nodes: before.len(),
+        moved,
+        clusters: list.len(),
+        clusters_moved: touched.len(),
+        frames,
+        farthest,
     }
 }

@@ -179,7 +179,8 @@
 //!
 //! **Groups drawn as boxes?** [`LayoutExtras::clusters`]: each [`Cluster`] keeps its
 //! members in a box no other node and no sibling box enters, nested by index;
-//! [`RapierLayout::cluster_bounds`] gives the boxes (`docs/clusters.md`).
+//! [`RapierLayout::cluster_bounds`] gives the boxes and
+//! [`RapierLayout::violated_clusters`] those that cannot hold (`docs/clusters.md`).
 //!
 //! **Timelines, layers, rings, soft groups?** Per-node [`NodeForces`] in
 //! [`LayoutExtras::forces`]: a pull toward a target x or y, a ring, a group key

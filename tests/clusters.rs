@@ -60,6 +60,8 @@ fn at_rest_every_box_holds_its_members_and_keeps_out_the_rest() {
     );
     let v = violations(&host);
     assert!(v.is_empty(), "at rest after {frames} frames: {v:?}");
+    let unheld = host.layout.violated_clusters();
+    assert!(unheld.is_empty(), "held, yet {unheld:?} listed as not");
     let bounds = host.layout.cluster_bounds();
     assert_eq!(bounds.len(), 6, "one box per cluster");
     assert!(
@@ -423,5 +425,76 @@ fn the_same_clusters_again_are_no_edit_and_a_changed_one_is() {
     assert!(
         v.is_empty(),
         "at rest {frames} frames after the edit: {v:?}"
+    );
+}
+
+/// Label boxes (`with_rect`, 42 to 56 units wide and 20 high): a box is made from the
+/// members' rectangles and parts the outsiders' rectangles, not their disks, so a wide
+/// label stays inside its cluster and an outsider's label stays out (the check reads
+/// the rectangles); every third node keeps a disk.
+#[test]
+fn label_boxes_stay_inside_their_cluster_and_outside_the_others() {
+    let scene = generate::label_boxes(communities(), |id| id % 3 == 0);
+    let clusters = by_community(&scene);
+    let (host, frames) = settled(scene, RapierLayoutConfig::stress(), clusters);
+    assert!(
+        host.layout.is_converged(&host.state),
+        "not at rest after {frames} frames"
+    );
+    let v = violations(&host);
+    assert!(
+        v.is_empty(),
+        "label boxes at rest after {frames} frames: {v:?}"
+    );
+}
+
+/// Clusters that cannot hold are listed: a member pinned inside another cluster's box,
+/// where the pinned box cannot give way, leaves both boxes overlapping, and the layout
+/// says which; unpinned, the boxes part and the list empties.
+#[test]
+fn clusters_that_cannot_hold_are_listed_and_the_list_empties_when_they_can() {
+    use common::{edge, node};
+    let scene = CanvasSceneInput::new(
+        vec![
+            node(0_u32, 0.0, 0.0),
+            node(1, 200.0, 0.0),
+            node(2, 100.0, 20.0),
+            node(3, 100.0, 200.0),
+        ],
+        vec![edge(0, 1), edge(2, 3), edge(1, 2)],
+    );
+    let mut host = Host::new(scene, RapierLayoutConfig::stress());
+    host.extras.clusters = vec![Cluster::new(vec![0, 1]), Cluster::new(vec![2, 3])];
+    // 0 and 1 hold cluster 0's box across x 0..200; 2 is held inside it.
+    host.extras.pinned.extend([0, 1, 2]);
+    let frames = host.settle(900);
+    assert!(
+        host.layout.is_converged(&host.state),
+        "not at rest after {frames} frames"
+    );
+    let v = violations(&host);
+    assert!(
+        v.overlapping_siblings > 0,
+        "the pins hold the boxes overlapping: {v:?}"
+    );
+    assert_eq!(
+        host.layout.violated_clusters(),
+        &[0, 1],
+        "both overlapping boxes listed, at rest after {frames} frames"
+    );
+    host.frames(3);
+    assert_eq!(
+        host.layout.violated_clusters(),
+        &[0, 1],
+        "the list stands while the layout rests"
+    );
+    host.extras.pinned.remove(&2);
+    let frames = host.settle(900);
+    let v = violations(&host);
+    assert!(v.is_empty(), "unpinned, held after {frames} frames: {v:?}");
+    assert!(
+        host.layout.violated_clusters().is_empty(),
+        "held, listed none: {:?}",
+        host.layout.violated_clusters()
     );
 }

@@ -11,7 +11,12 @@
 
 mod common;
 
+#[path = "../benches/common/generate.rs"]
+#[allow(dead_code)]
+mod generate;
+
 use common::*;
+use graph_canvas_layout::scene::Cluster;
 use graph_canvas_layout::RapierLayoutConfig;
 
 /// Every node's position, as bits, after each of `frames` frames of `scene` laid out by
@@ -71,6 +76,33 @@ fn a_layout_is_bit_identical_on_one_thread_and_on_two() {
             "{name}: (frame, node) where 2 threads first differ from 1"
         );
     }
+}
+
+/// Ten clusters of 100 (one per community) under stress(): the parting of the boxes,
+/// between the parallel forces and rapier's step, gives the same bits on one thread and
+/// on two.
+#[test]
+fn a_clustered_layout_is_bit_identical_on_one_thread_and_on_two() {
+    let scene = generate::communities(10, 100, 3, 4, 7);
+    let mut members = vec![Vec::new(); 10];
+    for n in &scene.nodes {
+        members[generate::community(n.id, 100)].push(n.id);
+    }
+    let clusters: Vec<Cluster<u32>> = members.into_iter().map(Cluster::new).collect();
+    let run = |threads: usize| {
+        pool(threads).install(|| {
+            let mut host = Host::new(scene.clone(), RapierLayoutConfig::stress());
+            host.extras.clusters = clusters.clone();
+            positions_after(host, 90)
+        })
+    };
+    let (one, two) = (run(1), run(2));
+    assert_ne!(one.first(), one.last(), "nothing moved in 90 frames");
+    assert_eq!(
+        first_difference(&one, &two),
+        None,
+        "(frame, node) where 2 threads first differ from 1"
+    );
 }
 
 /// 10,000 nodes and 25,000 springs: the contacts' passes cut into blocks (16,000 to

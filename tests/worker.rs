@@ -288,3 +288,73 @@ fn hold_sends_the_hosts_drags_and_pins_as_they_change() {
     assert_eq!(at(&worker, 3), pinned_at, "the pin held through the drag");
     assert_ne!(at(&worker, 0), far, "released, node 0 was pulled back");
 }
+
+/// `hold` sends the host's constraints and clusters when the lists change, and each
+/// frame carries the cluster boxes and the constraints left unheld: a host drawing
+/// boxes on a worker sees them held at rest, and a list sent again sends nothing.
+#[test]
+fn hold_sends_clusters_and_constraints_and_frames_carry_their_boxes() {
+    use graph_canvas_layout::quality::cluster_violations;
+    use graph_canvas_layout::scene::{Axis, Cluster, Constraint};
+    // Two rings of 8 joined by one edge, all at the origin.
+    let mut scene = ring(8);
+    scene
+        .nodes
+        .extend((8..16).map(|i| CanvasNode::new(i, Point2D::origin())));
+    scene
+        .edges
+        .extend((8..16).map(|i| CanvasEdge::new(i, 8 + (i - 8 + 1) % 8)));
+    scene.edges.push(CanvasEdge::new(0, 8));
+    let mut worker = LayoutWorker::spawn(scene.clone(), RapierLayoutConfig::stress());
+    let mut extras = LayoutExtras {
+        clusters: vec![
+            Cluster::new((0..8).collect()),
+            Cluster::new((8..16).collect()),
+        ],
+        constraints: vec![Constraint::separation(Axis::X, 3, 12, 100.0)],
+        ..LayoutExtras::default()
+    };
+    worker.hold(&scene, &extras);
+    rest(&mut worker);
+    let sent = worker.frame().applied;
+    worker.hold(&scene, &extras);
+    assert_eq!(
+        worker.frame().applied,
+        sent,
+        "an unchanged list is not sent again"
+    );
+    let frame = worker.frame().clone();
+    assert_eq!(frame.cluster_bounds.len(), 2, "one box per cluster");
+    assert!(
+        frame.violated_constraints.is_empty(),
+        "at rest the separation holds: {:?} unheld",
+        frame.violated_constraints
+    );
+    let mut laid = scene.clone();
+    for node in &mut laid.nodes {
+        node.position = frame.positions[frame.index[&node.id]];
+    }
+    let v = cluster_violations(&laid, &extras.clusters, &frame.cluster_bounds, 10.0, 1.0);
+    assert!(v.is_empty(), "the worker's clusters held at rest: {v:?}");
+    assert!(
+        frame.violated_clusters.is_empty(),
+        "and said so: {:?} unheld",
+        frame.violated_clusters
+    );
+    let x = |id: u32| laid.nodes[id as usize].position.x;
+    assert!(
+        x(12) >= x(3) + 99.0,
+        "separation by 100 along x: 3 at {}, 12 at {}",
+        x(3),
+        x(12)
+    );
+    // A cluster dropped: the next frames carry one box.
+    extras.clusters.pop();
+    worker.hold(&scene, &extras);
+    rest(&mut worker);
+    assert_eq!(
+        worker.frame().cluster_bounds.len(),
+        1,
+        "the dropped cluster's box is gone"
+    );
+}

@@ -3,6 +3,7 @@
 //! graph never holds up a frame. The demo's scene stays the source of what the graph
 //! is; with the worker, its edits go over as messages and the positions come back.
 
+use std::sync::Arc;
 use std::time::Instant;
 
 use graph_canvas_layout::euclid::default::Box2D;
@@ -26,6 +27,8 @@ pub enum Engine {
     Worker {
         worker: Box<LayoutWorker<u32>>,
         config: Box<RapierLayoutConfig>,
+        /// The cluster boxes of the newest frame read.
+        bounds: Arc<Vec<Box2D<f32>>>,
     },
 }
 
@@ -36,6 +39,7 @@ impl Engine {
             Engine::Worker {
                 worker: Box::new(LayoutWorker::spawn(scene.clone(), config.clone())),
                 config: Box::new(config),
+                bounds: Arc::default(),
             }
         } else {
             Engine::Direct {
@@ -45,12 +49,11 @@ impl Engine {
         }
     }
 
-    /// Each cluster's box after the last frame (none on the worker, which does not
-    /// hand them back).
+    /// Each cluster's box after the last frame (the worker's newest frame).
     pub fn cluster_bounds(&self) -> &[Box2D<f32>] {
         match self {
             Engine::Direct { layout, .. } => layout.cluster_bounds(),
-            Engine::Worker { .. } => &[],
+            Engine::Worker { bounds, .. } => bounds,
         }
     }
 
@@ -108,9 +111,10 @@ impl Engine {
                 scene.apply_deltas(&deltas);
                 Some(took)
             }
-            Engine::Worker { worker, .. } => {
+            Engine::Worker { worker, bounds, .. } => {
                 worker.hold(scene, extras);
                 let frame = worker.frame();
+                *bounds = Arc::clone(&frame.cluster_bounds);
                 for node in &mut scene.nodes {
                     if extras.dragging.contains(&node.id) {
                         continue;

@@ -2,6 +2,7 @@
 //! calls `step` once per frame, and SVG pictures (`svg.rs`).
 #![allow(dead_code)]
 
+pub mod communities;
 pub mod svg;
 
 use std::hash::Hasher;

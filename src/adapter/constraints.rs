@@ -86,6 +86,12 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             }
             self.constraints.settle(world, rounds, &locks);
             self.forces.targets.locks = locks;
+            // The balance at rest is the forces' where the bodies now stand: kept from
+            // before the settling, it would pull every body the settling moved once a
+            // disturbance wakes it, and the motion would spread over the whole layout.
+            let dt = world.integration_parameters().dt;
+            let alpha = self.heat.state.alpha;
+            self.forces.capture_rest(world, &self.config, alpha, dt);
             watch.stop(&mut self.forces.profile, |p| &mut p.constraints);
         }
         self.constraints.check(world);
@@ -129,6 +135,17 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
     /// ```
     pub fn cluster_bounds(&self) -> &[Box2D<f32>] {
         &self.clusters.bounds
+    }
+
+    /// The clusters (indices into the last call's
+    /// [`LayoutExtras::clusters`](crate::LayoutExtras::clusters)) whose box the last call
+    /// left overlapping a sibling's box, or a node that is not its member, by more than a
+    /// unit: clusters that cannot all be held (pinned members pressed against another
+    /// box, a dragged node held inside a box it is not in), or still being parted in the
+    /// first frames of a disturbance. Empty when every cluster holds. Checked after each
+    /// call that moved the layout, from the boxes of [`cluster_bounds`](Self::cluster_bounds).
+    pub fn violated_clusters(&self) -> &[usize] {
+        &self.clusters.violated
     }
 
     /// The scene edges (indices into `scene.edges`) a [`Flow`](crate::config::Flow)

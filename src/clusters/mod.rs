@@ -42,6 +42,12 @@ pub(crate) struct Clusters<N> {
     /// Whether a parting moved a body since [`take_moved`](Self::take_moved): rapier
     /// counts a body woken that way as awake only from its next step.
     moved: bool,
+    /// The clusters (indices into the host's list) the last check found more than a
+    /// unit from holding, and the check's marks by cluster.
+    pub(crate) violated: Vec<usize>,
+    unheld: Vec<bool>,
+    /// Whether the list was compiled since the last check.
+    unchecked: bool,
 }
 
 impl<N> Default for Clusters<N> {
@@ -57,6 +63,9 @@ impl<N> Default for Clusters<N> {
             bounds: Vec::new(),
             primed: false,
             moved: false,
+            violated: Vec::new(),
+            unheld: Vec::new(),
+            unchecked: true,
         }
     }
 }
@@ -102,6 +111,7 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
         self.tree = tree;
         self.list = clusters.to_vec();
         self.generation = generation;
+        self.unchecked = true;
         (!same_list && primed).then_some(edit)
     }
 
@@ -209,12 +219,19 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
 
     /// One parting of every level, from the inside out.
     fn part_levels(&mut self, most: f32) -> f32 {
+        self.visit_levels(most, false)
+    }
+
+    /// Each level from the inside out: parted, or with `check`, checked (nothing moves;
+    /// [`Clusters::unheld`] marks the boxes overlapping an item of their level).
+    fn visit_levels(&mut self, most: f32, check: bool) -> f32 {
         let mut ctx = Ctx {
             tree: &self.tree,
             bodies: &mut self.bodies,
             boxes: &mut self.boxes,
             moves: &mut self.moves,
             most,
+            unheld: check.then_some(&mut self.unheld[..]),
         };
         let mut moved = 0.0_f32;
         for &c in &self.tree.inside_out {
@@ -225,6 +242,18 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
         let clustered = &self.tree.clustered;
         let loose = (0..clustered.len() as u32).filter(|&s| !clustered[s as usize]);
         moved.max(self.level.part(&self.tree.top, loose, &mut ctx))
+    }
+
+    /// Notes in [`violated`](Self::violated) the clusters whose box overlaps a sibling
+    /// box or a node not theirs by more than a unit, from the boxes as made.
+    fn check(&mut self) {
+        self.unheld.clear();
+        self.unheld.resize(self.tree.held.len(), false);
+        self.moves
+            .clear(self.bodies.points.len(), self.tree.held.len());
+        self.visit_levels(0.0, true);
+        let unheld = self.unheld.iter().enumerate().filter(|&(_, &u)| u);
+        self.violated.extend(unheld.map(|(c, _)| c));
     }
 
     /// Reads every body's centre, outline and whether it gives way.
@@ -268,12 +297,27 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
     }
 
     /// Notes each listed cluster's box from `world` (an empty box for one left out or
-    /// without members in the world), index-aligned with the host's list.
-    pub(crate) fn note_bounds(&mut self, world: Option<&RapierSceneWorld<N>>, listed: usize) {
+    /// without members in the world), index-aligned with the host's list; and, when the
+    /// call `stepped` the world or the list was compiled since, which clusters are more
+    /// than a unit from holding (a call that did neither moved nothing: the last check
+    /// stands).
+    pub(crate) fn note_bounds(
+        &mut self,
+        world: Option<&RapierSceneWorld<N>>,
+        listed: usize,
+        stepped: bool,
+    ) {
         self.bounds.clear();
+        let check = stepped || std::mem::take(&mut self.unchecked);
+        if check {
+            self.violated.clear();
+        }
         if let Some(world) = world.filter(|_| !self.tree.is_empty()) {
             self.read(world, &[]);
             self.boxes.make(&self.tree, &self.bodies);
+            if check {
+                self.check();
+            }
             self.bounds.extend(self.boxes.bounds.iter().map(|&b| {
                 if is_empty(b) {
                     Box2D::zero()

@@ -202,7 +202,14 @@ pub(super) struct Ctx<'a> {
     /// took most of a 10,000-node frame; a step at a time, they part over a few frames
     /// and the cold stop parts the rest whole.
     pub(super) most: f32,
+    /// A check instead of a parting: by cluster, set when its box overlaps an item of
+    /// its level by more than [`UNHELD`]; nothing moves.
+    pub(super) unheld: Option<&'a mut [bool]>,
 }
+
+/// How deep an overlap a check notes as a cluster not held (world units): the unit the
+/// layout's other reports allow.
+pub(super) const UNHELD: f32 = 1.0;
 
 impl Ctx<'_> {
     fn bounds(&self, item: Item) -> Bounds {
@@ -224,6 +231,16 @@ impl Ctx<'_> {
         let (ba, bb) = (self.bounds(a), self.bounds(b));
         let o = overlap(ba, bb);
         if !(o[0] > 0.0 && o[1] > 0.0) {
+            return 0.0;
+        }
+        if let Some(unheld) = self.unheld.as_deref_mut() {
+            if o[0].min(o[1]) > UNHELD {
+                for item in [a, b] {
+                    if let Item::Cluster(c) = item {
+                        unheld[c as usize] = true;
+                    }
+                }
+            }
             return 0.0;
         }
         let gives = |k: usize| self.give(a, k) + self.give(b, k) > 0.0;

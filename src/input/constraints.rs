@@ -122,6 +122,22 @@ impl<N> Constraint<N> {
             Kind::Align => None,
         }
     }
+
+    /// Whether `other` holds the same: `==` with the gaps compared to the bit (a NaN gap
+    /// equals itself, which `==` denies, so a host passing the same bad list every
+    /// frame sends nothing new).
+    pub(crate) fn same_as(&self, other: &Self) -> bool
+    where
+        N: PartialEq,
+    {
+        let kinds = match (self.kind, other.kind) {
+            (Kind::Separation { gap: a }, Kind::Separation { gap: b }) => {
+                a.to_bits() == b.to_bits()
+            }
+            (a, b) => a == b,
+        };
+        kinds && self.axis == other.axis && self.nodes == other.nodes
+    }
 }
 
 /// Whether a separation's gap can be held: finite and not negative. What `try_step`

@@ -11,10 +11,12 @@ use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
 use std::time::Duration;
 
-use euclid::default::Point2D;
+use euclid::default::{Box2D, Point2D};
 
 use self::thread::{Command, Slot, Worker};
 use crate::config::RapierLayoutConfig;
+use crate::input::clusters::Cluster;
+use crate::input::constraints::Constraint;
 use crate::input::layout::{LayoutExtras, NodeMap, NodeSet};
 use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput};
@@ -34,6 +36,16 @@ pub struct LayoutFrame<N> {
     pub positions: Vec<Point2D<f32>>,
     /// Whether the layout rested after this step ([`crate::Layout::is_converged`]).
     pub converged: bool,
+    /// Each cluster's box after the step, in the order of the last cluster list sent
+    /// ([`RapierLayout::cluster_bounds`]); empty without clusters.
+    pub cluster_bounds: Arc<Vec<Box2D<f32>>>,
+    /// The constraints the step left more than a unit from holding
+    /// ([`RapierLayout::violated_constraints`]), as indices into the last constraint
+    /// list sent.
+    pub violated_constraints: Arc<Vec<usize>>,
+    /// The clusters the step left more than a unit from holding
+    /// ([`RapierLayout::violated_clusters`]), as indices into the last cluster list sent.
+    pub violated_clusters: Arc<Vec<usize>>,
     /// How many of the host's messages the worker had applied before this step.
     pub applied: u64,
     /// Steps the worker has taken in all.
@@ -51,6 +63,9 @@ impl<N> Default for LayoutFrame<N> {
             index: Arc::default(),
             positions: Vec::new(),
             converged: false,
+            cluster_bounds: Arc::default(),
+            violated_constraints: Arc::default(),
+            violated_clusters: Arc::default(),
             applied: 0,
             steps: 0,
             step_times: Vec::new(),
@@ -115,6 +130,10 @@ pub struct LayoutWorker<N: Clone + Eq + Hash + Send + Sync + 'static> {
     drags: NodeMap<N, Point2D<f32>>,
     /// The nodes the worker was told are pinned.
     pinned: NodeSet<N>,
+    /// The last constraint list sent.
+    constraints: Vec<Constraint<N>>,
+    /// The last cluster list sent.
+    clusters: Vec<Cluster<N>>,
     /// The sequence number of the last message sent.
     sent: u64,
 }
@@ -186,6 +205,7 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
         let (commands, receiver) = channel();
         let slot: Slot<N> = Arc::new(Mutex::new(None));
         let pinned = extras.pinned.clone();
+        let (constraints, clusters) = (extras.constraints.clone(), extras.clusters.clone());
         let worker = Worker::new(
             scene,
             config,
@@ -205,6 +225,8 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
             latest: LayoutFrame::default(),
             drags: NodeMap::default(),
             pinned,
+            constraints,
+            clusters,
             sent: 0,
         }
     }
@@ -317,11 +339,16 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
         self.send(Command::Pin(id, false));
     }
 
-    /// Sends what `extras` says of drags and pins where it changed, node by node in
-    /// `scene`'s order: each dragged node where `scene` has it, a release for a node no
-    /// longer dragged, a pin or an unpin. A host that keeps its own [`LayoutExtras`]
-    /// calls this once a frame in place of [`drag`](Self::drag),
-    /// [`release`](Self::release), [`pin`](Self::pin) and [`unpin`](Self::unpin).
+    /// Sends what `extras` says of drags, pins, constraints and clusters where it
+    /// changed: node by node in `scene`'s order, each dragged node where `scene` has
+    /// it, a release for a node no longer dragged, a pin or an unpin; then the
+    /// constraint and cluster lists, each when it differs from the one sent last. A
+    /// host that keeps its own [`LayoutExtras`] calls this once a frame in place of
+    /// [`drag`](Self::drag), [`release`](Self::release), [`pin`](Self::pin),
+    /// [`unpin`](Self::unpin), [`set_constraints`](Self::set_constraints) and
+    /// [`set_clusters`](Self::set_clusters). The lists are compared each call (a walk
+    /// of their members; a NaN gap or padding equals itself, so an unchanged list is
+    /// never sent again).
     pub fn hold(&mut self, scene: &CanvasSceneInput<N>, extras: &LayoutExtras<N>) {
         for node in &scene.nodes {
             let id = &node.id;
@@ -336,6 +363,29 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> LayoutWorker<N> {
                 _ => {}
             }
         }
+        if !same_list(&extras.constraints, &self.constraints, Constraint::same_as) {
+            self.set_constraints(extras.constraints.clone());
+        }
+        if !same_list(&extras.clusters, &self.clusters, Cluster::same_as) {
+            self.set_clusters(extras.clusters.clone());
+        }
+    }
+
+    /// Replaces the hard constraints, as
+    /// [`LayoutExtras::constraints`](crate::LayoutExtras::constraints) does for a
+    /// [`RapierLayout`]: a constraint added, removed or changed reheats the nodes it
+    /// names. [`LayoutFrame::violated_constraints`] indexes this list.
+    pub fn set_constraints(&mut self, constraints: Vec<Constraint<N>>) {
+        self.constraints.clone_from(&constraints);
+        self.send(Command::Constraints(constraints));
+    }
+
+    /// Replaces the clusters, as [`LayoutExtras::clusters`](crate::LayoutExtras::clusters)
+    /// does for a [`RapierLayout`]: a cluster added, removed or changed reheats its
+    /// members. [`LayoutFrame::cluster_bounds`] gives the boxes in this list's order.
+    pub fn set_clusters(&mut self, clusters: Vec<Cluster<N>>) {
+        self.clusters.clone_from(&clusters);
+        self.send(Command::Clusters(clusters));
     }
 
     /// Sets node `id`'s per-node forces ([`NodeForces`]), or clears them with `None`.
@@ -388,6 +438,11 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static + std::fmt::Debug> std::fmt::D
             .field("converged", &self.latest.converged)
             .finish_non_exhaustive()
     }
+}
+
+/// Whether lists `a` and `b` hold the same items by `same`.
+fn same_list<T>(a: &[T], b: &[T], same: impl Fn(&T, &T) -> bool) -> bool {
+    a.len() == b.len() && a.iter().zip(b).all(|(a, b)| same(a, b))
 }
 
 /// Runs `worker` on a rayon pool of `threads` threads of its own under `parallel`.

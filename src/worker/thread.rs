@@ -11,11 +11,13 @@ use std::sync::mpsc::{Receiver, RecvTimeoutError, TryRecvError};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
-use euclid::default::Point2D;
+use euclid::default::{Box2D, Point2D};
 
 use super::LayoutFrame;
 use crate::adapter::{RapierLayout, RapierLayoutState};
 use crate::config::RapierLayoutConfig;
+use crate::input::clusters::Cluster;
+use crate::input::constraints::Constraint;
 use crate::input::layout::{Layout, LayoutExtras, NodeMap};
 use crate::input::node_forces::NodeForces;
 use crate::input::scene::{CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport};
@@ -35,6 +37,8 @@ pub(super) enum Command<N> {
     Configure(Box<RapierLayoutConfig>),
     Reshape(N, f32, NodeShape),
     PoolAwake(bool),
+    Constraints(Vec<Constraint<N>>),
+    Clusters(Vec<Cluster<N>>),
 }
 
 /// The newest frame, waiting for the host to take it.
@@ -63,6 +67,10 @@ pub(super) struct Worker<N> {
     applied: u64,
     steps: u64,
     step_times: Vec<Duration>,
+    /// The cluster boxes last published, shared with the frames until they change.
+    bounds: Arc<Vec<Box2D<f32>>>,
+    /// The violated constraints and clusters last published, shared likewise.
+    violated: [Arc<Vec<usize>>; 2],
 }
 
 impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
@@ -90,6 +98,8 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
             applied: 0,
             steps: 0,
             step_times: Vec::new(),
+            bounds: Arc::default(),
+            violated: Default::default(),
         }
     }
 
@@ -241,6 +251,8 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
                 self.extras.forces.remove(&id);
             }
             Command::Configure(config) => self.layout.config = *config,
+            Command::Constraints(list) => self.extras.constraints = list,
+            Command::Clusters(list) => self.extras.clusters = list,
             Command::PoolAwake(on) => self.layout.set_pool_awake(on),
             Command::Reshape(id, radius, shape) => {
                 self.reindex();
@@ -275,6 +287,28 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
         self.nodes_changed = false;
     }
 
+    /// The layout's cluster boxes, a new list only when they changed.
+    fn shared_bounds(&mut self) -> Arc<Vec<Box2D<f32>>> {
+        let now = self.layout.cluster_bounds();
+        if self.bounds.as_slice() != now {
+            self.bounds = Arc::new(now.to_vec());
+        }
+        Arc::clone(&self.bounds)
+    }
+
+    /// The layout's violated constraints (`kind` 0) or clusters (1), a new list only
+    /// when it changed.
+    fn shared_violations(&mut self, kind: usize) -> Arc<Vec<usize>> {
+        let now = match kind {
+            0 => self.layout.violated_constraints(),
+            _ => self.layout.violated_clusters(),
+        };
+        if self.violated[kind].as_slice() != now {
+            self.violated[kind] = Arc::new(now.to_vec());
+        }
+        Arc::clone(&self.violated[kind])
+    }
+
     /// Hands the newest positions to the host; step times the host has not read yet
     /// carry over.
     fn publish(&mut self) {
@@ -284,6 +318,9 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
             index: Arc::clone(&self.index),
             positions: self.scene.nodes.iter().map(|n| n.position).collect(),
             converged: self.at_rest(),
+            cluster_bounds: self.shared_bounds(),
+            violated_constraints: self.shared_violations(0),
+            violated_clusters: self.shared_violations(1),
             applied: self.applied,
             steps: self.steps,
             step_times: std::mem::take(&mut self.step_times),

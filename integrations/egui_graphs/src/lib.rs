@@ -53,6 +53,15 @@
 //! others (`Graph<N, E, Ty, Ix, LabelBox>`). A display of your own works the same way,
 //! as long as its boundary is a disk or a level box around its centre.
 //!
+//! # Groups and constraints
+//! egui_graphs has no groups of its own: list them by node index in
+//! [`RapierGraphState::clusters`] (and hard constraints in
+//! [`RapierGraphState::constraints`]), set the state with `egui_graphs::set_layout_state`,
+//! and draw [`RapierGraphState::cluster_bounds`] from the state `get_layout_state` returns
+//! after the frame, through the view's graph-to-screen transform as nodes are drawn. Both
+//! lists persist with the rest of the state; a changed list is an edit the layout takes
+//! on the next frame, on the worker too.
+//!
 //! A `StableGraph` reuses a removed node's index for the next node added: when you
 //! remove a node and add another in the same frame, call
 //! [`RapierGraphState::forget_node`] so the new node does not take over the old body.
@@ -68,10 +77,10 @@ use std::collections::BTreeSet;
 use std::sync::{Arc, Mutex, PoisonError};
 
 use egui_graphs::{AnimatedState, DisplayEdge, DisplayNode, Graph, Layout, LayoutState};
-use graph_canvas_layout::euclid::default::Point2D;
+use graph_canvas_layout::euclid::default::{Box2D, Point2D};
 use graph_canvas_layout::{
-    CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, Layout as _, LayoutExtras,
-    RapierLayout, RapierLayoutConfig, RapierLayoutState,
+    CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, Cluster, Constraint, Layout as _,
+    LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState,
 };
 use petgraph::stable_graph::{IndexType, NodeIndex};
 use petgraph::EdgeType;
@@ -113,6 +122,18 @@ pub struct RapierGraphState {
     /// Pinned nodes, by node index: they hold where they are (and where the host or a
     /// drag puts them).
     pub pinned: BTreeSet<usize>,
+    /// Groups of nodes, by node index, each kept in a box no other node enters
+    /// ([`LayoutExtras::clusters`]): egui_graphs has no groups of its own, so the app
+    /// lists them here and draws [`cluster_bounds`](Self::cluster_bounds). Default:
+    /// none.
+    pub clusters: Vec<Cluster<usize>>,
+    /// Hard constraints on the nodes, by node index ([`LayoutExtras::constraints`]).
+    /// Default: none.
+    pub constraints: Vec<Constraint<usize>>,
+    /// Each cluster's box after the last frame, in [`clusters`](Self::clusters)' order
+    /// and in the graph's coordinates (those of the node locations).
+    #[serde(skip)]
+    pub cluster_bounds: Vec<Box2D<f32>>,
     /// Whether the layout was at rest after the last frame.
     pub converged: bool,
     /// The mean distance the graph's nodes moved in the last frame (0 at rest).
@@ -130,6 +151,9 @@ impl Default for RapierGraphState {
             is_running: true,
             config: RapierLayoutConfig::stress(),
             pinned: BTreeSet::new(),
+            clusters: Vec::new(),
+            constraints: Vec::new(),
+            cluster_bounds: Vec::new(),
             converged: false,
             last_avg_displacement: None,
             step_count: 0,
@@ -231,6 +255,12 @@ impl Layout<RapierGraphState> for RapierGraphLayout {
         read_graph(g, &mut world.scene, &mut world.extras);
         world.extras.pinned.clear();
         world.extras.pinned.extend(state.pinned.iter().copied());
+        if world.extras.clusters != state.clusters {
+            world.extras.clusters.clone_from(&state.clusters);
+        }
+        if world.extras.constraints != state.constraints {
+            world.extras.constraints.clone_from(&state.constraints);
+        }
         if world.synced.is_none()
             && !world.layout.has_world()
             && world.scene.nodes.len() >= WORKER_FROM
@@ -243,7 +273,7 @@ impl Layout<RapierGraphState> for RapierGraphLayout {
         }
         if let Some(synced) = world.synced.as_mut() {
             synced.send(&world.scene, &world.extras, &state.config);
-            let (positions, converged) = synced.receive();
+            let (positions, converged) = synced.receive(&mut state.cluster_bounds);
             let mut moved = 0.0_f32;
             for (index, p) in positions {
                 if world.extras.dragging.contains(&index) {
@@ -278,6 +308,10 @@ impl Layout<RapierGraphState> for RapierGraphLayout {
                 moved += delta.length();
             }
         }
+        state.cluster_bounds.clear();
+        state
+            .cluster_bounds
+            .extend_from_slice(world.layout.cluster_bounds());
         state.converged = world.layout.is_converged(&world.state);
         state.last_avg_displacement = Some(moved / g.node_count() as f32);
         state.step_count += 1;

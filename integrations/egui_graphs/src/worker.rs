@@ -6,7 +6,7 @@
 use std::collections::{BTreeSet, HashMap};
 
 use egui::Pos2;
-use graph_canvas_layout::euclid::default::Point2D;
+use graph_canvas_layout::euclid::default::{Box2D, Point2D};
 use graph_canvas_layout::scene::topology_hash;
 use graph_canvas_layout::worker::LayoutWorker;
 use graph_canvas_layout::{
@@ -67,7 +67,8 @@ impl Synced {
     }
 
     /// Sends what changed since the last frame: `scene` is the graph as read this frame
-    /// (`location` of each node included), `extras` its drags and pins.
+    /// (`location` of each node included), `extras` its drags, pins, constraints and
+    /// clusters.
     pub(crate) fn send(
         &mut self,
         scene: &CanvasSceneInput<usize>,
@@ -97,9 +98,15 @@ impl Synced {
         }
     }
 
-    /// The newest positions, by node index, and whether the layout rests.
-    pub(crate) fn receive(&mut self) -> (Vec<(usize, Point2D<f32>)>, bool) {
+    /// The newest positions, by node index, and whether the layout rests; the clusters'
+    /// boxes into `bounds`.
+    pub(crate) fn receive(
+        &mut self,
+        bounds: &mut Vec<Box2D<f32>>,
+    ) -> (Vec<(usize, Point2D<f32>)>, bool) {
         let frame = self.worker.frame();
+        bounds.clear();
+        bounds.extend_from_slice(&frame.cluster_bounds);
         let positions = frame
             .ids
             .iter()

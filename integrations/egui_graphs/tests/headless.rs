@@ -215,3 +215,45 @@ fn fast_forward_until_stable_lays_the_graph_out_in_one_frame() {
         "a node moved after {frames} frames"
     );
 }
+
+/// Groups through the state: karate's two factions listed as clusters rest in boxes
+/// that hold their members and keep the other faction out, and the state hands the
+/// boxes back for the app to draw.
+#[test]
+fn clusters_in_the_state_keep_the_factions_in_boxes_of_their_own() {
+    use graph_canvas_layout::quality::cluster_violations;
+    use graph_canvas_layout::{CanvasNode, CanvasSceneInput, Cluster};
+    // Zachary's split: the members who followed the instructor (node 0).
+    const INSTRUCTOR: [usize; 17] = [0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 16, 17, 19, 21];
+    let clusters = vec![
+        Cluster::new(INSTRUCTOR.to_vec()),
+        Cluster::new((0..34).filter(|i| !INSTRUCTOR.contains(i)).collect()),
+    ];
+    let mut window = Window::<DefaultNodeShape>::new(karate());
+    let listed = clusters.clone();
+    window.frame(move |ui| {
+        let mut state = RapierGraphState::default();
+        state.clusters = listed;
+        set_layout_state(ui, state, None);
+    });
+    let frames = window
+        .settle(1_200)
+        .expect("karate rests with its clusters");
+    let state = window.frame(|_| ());
+    assert_eq!(state.cluster_bounds.len(), 2, "one box per cluster");
+    let scene = CanvasSceneInput::new(
+        (0..34)
+            .map(|i| {
+                let p = window.location(i);
+                CanvasNode::new(
+                    i as usize,
+                    graph_canvas_layout::euclid::default::Point2D::new(p.x, p.y),
+                )
+                .with_radius(5.0)
+            })
+            .collect(),
+        Vec::new(),
+    );
+    let v = cluster_violations(&scene, &clusters, &state.cluster_bounds, 5.0, 1.0);
+    assert!(v.is_empty(), "at rest after {frames} frames: {v:?}");
+}

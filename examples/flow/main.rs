@@ -8,7 +8,7 @@
 //! `target/flow/<scene>_flow.svg` and `_plain.svg`.
 //!
 //! `cargo run --release --example flow -- [--gap G] [--repeat K] [--layers] [--dot]
-//! [--drag] [--passes 1,2,4] [scene ...]`; the scene defaults to `crate_deps`.
+//! [--drag] [--subtrees] [--subtree-padding P] [--passes 1,2,4] [scene ...]`; the scene defaults to `crate_deps`.
 //! - `--layers`: the flow in layers too (`Flow::in_layers`), written to `_layers.svg`.
 //! - `--repeat K`: each layout K times, by turns; the times are the medians.
 //! - `--dot`: Graphviz `dot` on the same graph (`apt-get install graphviz`): the same
@@ -16,6 +16,9 @@
 //! - `--drag`: at rest, the busiest node dragged around a circle for 180 frames, with and
 //!   without the flow: the worst shortfall after the drag's first 10 frames, and the
 //!   step's p95.
+//! - `--subtrees`: the flow with each subtree a cluster nested in its parent's
+//!   (`subtrees.rs`), written to `_subtrees.svg`; `--subtree-padding P` sets their
+//!   padding (default 15).
 //! - `--passes`: the flow (and with `--layers` the flow in layers) under each number of
 //!   constraint passes per substep: the worst shortfall of any frame, stress, crossings,
 //!   frames to rest, the constraints' time a frame (`StepProfile::constraints`) and the
@@ -23,6 +26,7 @@
 //!   time a frame.
 
 use graph_canvas_layout::config::{Flow, Solver};
+use graph_canvas_layout::scene::Cluster;
 use graph_canvas_layout::{CanvasSceneInput, RapierLayoutConfig};
 
 #[path = "../common/mod.rs"]
@@ -30,6 +34,7 @@ mod common;
 mod dot;
 mod drag;
 mod measure;
+mod subtrees;
 
 use common::{load, Host};
 use measure::{worst_shortfall, Figures};
@@ -41,6 +46,8 @@ struct Options {
     dot: bool,
     layers: bool,
     drag: bool,
+    subtrees: bool,
+    subtree_padding: f32,
     passes: Vec<u32>,
     repeat: usize,
     scenes: Vec<String>,
@@ -52,6 +59,8 @@ fn options() -> Options {
         dot: false,
         layers: false,
         drag: false,
+        subtrees: false,
+        subtree_padding: 15.0,
         passes: Vec::new(),
         repeat: 1,
         scenes: Vec::new(),
@@ -71,6 +80,13 @@ fn options() -> Options {
                     .expect("--repeat K")
             }
             "--drag" => o.drag = true,
+            "--subtrees" => o.subtrees = true,
+            "--subtree-padding" => {
+                o.subtree_padding = rest
+                    .next()
+                    .and_then(|v| v.parse().ok())
+                    .expect("--subtree-padding P")
+            }
             "--passes" => {
                 o.passes = rest
                     .next()
@@ -96,8 +112,14 @@ struct Run {
     shortfall: Vec<f32>,
 }
 
-fn run(scene: &CanvasSceneInput<u32>, config: RapierLayoutConfig, gap: f32, profile: bool) -> Run {
+fn run(
+    scene: &CanvasSceneInput<u32>,
+    (config, clusters): (RapierLayoutConfig, &[Cluster<u32>]),
+    gap: f32,
+    profile: bool,
+) -> Run {
     let mut host = Host::new(scene.clone(), config);
+    host.extras.clusters = clusters.to_vec();
     host.layout.set_profiling(profile);
     let mut shortfall = Vec::new();
     let timed = host.settle_timed(FRAME, 2_000, |host| {
@@ -155,7 +177,7 @@ fn main() {
                         },
                         ..flow.clone()
                     };
-                    let mut r = run(&scene, config, o.gap, true);
+                    let mut r = run(&scene, (config, &[]), o.gap, true);
                     let worst = r.shortfall.iter().copied().fold(0.0_f32, f32::max);
                     let f = Figures::of(&r.host.scene, o.gap, r.host.layout.flow_exempt_edges());
                     let profile = r.host.layout.profile().expect("profiling on");
@@ -177,19 +199,35 @@ fn main() {
         // The two layouts by turns, `--repeat` times: the timings are medians, the
         // rest the same in every run.
         let mut configs = vec![
-            ("`stress()`", RapierLayoutConfig::stress(), "plain"),
-            ("`stress()` + `Flow::down`", flow.clone(), "flow"),
+            (
+                "`stress()`",
+                RapierLayoutConfig::stress(),
+                "plain",
+                Vec::new(),
+            ),
+            (
+                "`stress()` + `Flow::down`",
+                flow.clone(),
+                "flow",
+                Vec::new(),
+            ),
         ];
         if o.layers {
-            configs.push(("`Flow::down(..).in_layers()`", layered.clone(), "layers"));
+            let layers = ("`Flow::down(..).in_layers()`", layered.clone(), "layers");
+            configs.push((layers.0, layers.1, layers.2, Vec::new()));
+        }
+        if o.subtrees {
+            let subtrees = subtrees::clusters(&scene, o.subtree_padding);
+            let label = "`Flow::down` + subtrees as clusters";
+            configs.push((label, flow.clone(), "subtrees", subtrees));
         }
         let mut timings = vec![(Vec::new(), Vec::new()); configs.len()];
         let mut drags: Vec<Vec<drag::Drag>> = vec![Vec::new(); configs.len()];
         let mut last = Vec::new();
         for _ in 0..o.repeat {
             last.clear();
-            for (k, (_, config, _)) in configs.iter().enumerate() {
-                let mut r = run(&scene, config.clone(), o.gap, false);
+            for (k, (_, config, _, clusters)) in configs.iter().enumerate() {
+                let mut r = run(&scene, (config.clone(), clusters), o.gap, false);
                 timings[k].0.push(r.p95_ms);
                 timings[k].1.push(r.wall_ms);
                 // The layout at rest, before any drag.
@@ -206,7 +244,7 @@ fn main() {
             v[v.len() / 2]
         };
         let p95: Vec<f64> = timings.iter_mut().map(|t| median(&mut t.0)).collect();
-        for (k, ((label, _, file), (f, exempt, frames, laid))) in
+        for (k, ((label, _, file, _), (f, exempt, frames, laid))) in
             configs.iter().zip(&last).enumerate()
         {
             let shown = if k == 0 {

@@ -97,6 +97,18 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.constraints.check(world);
     }
 
+    /// At the end of a call: notes the clusters' boxes, and checks what holds where the
+    /// call moved the layout or the lists changed (a call that did neither leaves the
+    /// last reports standing).
+    pub(super) fn note_reports(&mut self, listed: usize) {
+        let stepped = self.heat.stepped;
+        self.clusters
+            .note_bounds(self.world.as_ref(), listed, stepped);
+        if let Some(world) = self.world.as_ref() {
+            self.constraints.check_if_unchecked(world);
+        }
+    }
+
     /// Each cluster's box as of the last call, index-aligned with that call's
     /// [`LayoutExtras::clusters`]: its members' outlines (disks, or the boxes of
     /// [`NodeShape::Rect`](crate::NodeShape::Rect) nodes) and its nested clusters' boxes,

@@ -483,14 +483,9 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         known: Option<&[usize]>,
     ) -> DeltaMap<N> {
         let watch = Stopwatch::start(&self.forces.profile);
-        let halted_before = self.heat.state.halted;
+        self.heat.stepped = false;
         let deltas = self.advance_untimed(scene, state, dt, extras, known);
-        // A call that found the layout halted and left it so moved nothing (a
-        // disturbance lifts the halt, and the cold stop that halts again takes time).
-        let stepped = !(halted_before && self.heat.state.halted);
-        let listed = extras.clusters.len();
-        self.clusters
-            .note_bounds(self.world.as_ref(), listed, stepped);
+        self.note_reports(extras.clusters.len());
         watch.stop(&mut self.forces.profile, |p| {
             p.calls += 1;
             &mut p.total

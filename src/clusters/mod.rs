@@ -308,7 +308,8 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
         stepped: bool,
     ) {
         self.bounds.clear();
-        let check = stepped || std::mem::take(&mut self.unchecked);
+        let unchecked = std::mem::take(&mut self.unchecked);
+        let check = stepped || unchecked;
         if check {
             self.violated.clear();
         }

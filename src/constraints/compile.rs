@@ -39,6 +39,10 @@ pub(crate) struct Compiled<N> {
     /// Whether a call compiled them since the layout was made or restored: the first
     /// compile is no edit (the world it holds them on is new, or restored as it was).
     pub(super) primed: bool,
+    /// Whether the host's list moved under the reports since the last check (a
+    /// reordered list, a bad constraint inserted: no disturbance, but the indices
+    /// [`violated`](Self::violated) gives change).
+    unchecked: bool,
 }
 
 impl<N> Default for Compiled<N> {
@@ -56,6 +60,7 @@ impl<N> Default for Compiled<N> {
             violated: Vec::new(),
             violated_edges: Vec::new(),
             primed: false,
+            unchecked: true,
         }
     }
 }
@@ -80,8 +85,10 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
             std::mem::take(&mut self.rows),
         );
         self.skipped = 0;
-        self.origin.clear();
-        self.row_origin.clear();
+        let origins = (
+            std::mem::take(&mut self.origin),
+            std::mem::take(&mut self.row_origin),
+        );
         for (i, constraint) in extras.constraints.iter().enumerate() {
             let (separations, rows) = (self.separations.len(), self.rows.len());
             if !self.add(constraint, world) {
@@ -91,6 +98,7 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
                 .extend((separations..self.separations.len()).map(|_| i));
             self.row_origin.extend((rows..self.rows.len()).map(|_| i));
         }
+        self.unchecked |= origins.0 != self.origin || origins.1 != self.row_origin;
         let mut edit = Vec::new();
         let flow_changed = self.flow.sync(flow, scene, world, generation, &mut edit);
         let same = before.0 == self.separations && before.1 == self.rows;
@@ -136,9 +144,18 @@ impl<N: Clone + Eq + Hash> Compiled<N> {
         &self.flow.exempt
     }
 
+    /// [`check`](Self::check)s, if the host's list moved under the reports since the
+    /// last check.
+    pub(crate) fn check_if_unchecked(&mut self, world: &RapierSceneWorld<N>) {
+        if self.unchecked {
+            self.check(world);
+        }
+    }
+
     /// After the call's substeps: which constraints rest more than [`HELD_WITHIN`] from
     /// holding (conflicting ones that cannot all hold, or ones still settling).
     pub(crate) fn check(&mut self, world: &RapierSceneWorld<N>) {
+        self.unchecked = false;
         self.local.refresh(world);
         self.violated.clear();
         self.violated_edges.clear();

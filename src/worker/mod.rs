@@ -36,8 +36,10 @@ pub struct LayoutFrame<N> {
     pub positions: Vec<Point2D<f32>>,
     /// Whether the layout rested after this step ([`crate::Layout::is_converged`]).
     pub converged: bool,
-    /// Each cluster's box after the step, in the order of the last cluster list sent
-    /// ([`RapierLayout::cluster_bounds`]); empty without clusters.
+    /// Each cluster's box after the step ([`RapierLayout::cluster_bounds`]), in the
+    /// order of the cluster list the step held: the last one sent among the
+    /// [`applied`](Self::applied) messages (a list sent since reaches a later frame);
+    /// empty without clusters.
     pub cluster_bounds: Arc<Vec<Box2D<f32>>>,
     /// The constraints the step left more than a unit from holding
     /// ([`RapierLayout::violated_constraints`]), as indices into the last constraint

@@ -289,7 +289,11 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
 
     /// The layout's cluster boxes, a new list only when they changed.
     fn shared_bounds(&mut self) -> Arc<Vec<Box2D<f32>>> {
-        let now = self.layout.cluster_bounds();
+        // With no node, the layout was not stepped: its boxes are the last step's.
+        let now = match self.scene.nodes.is_empty() {
+            true => &[],
+            false => self.layout.cluster_bounds(),
+        };
         if self.bounds.as_slice() != now {
             self.bounds = Arc::new(now.to_vec());
         }
@@ -299,9 +303,10 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
     /// The layout's violated constraints (`kind` 0) or clusters (1), a new list only
     /// when it changed.
     fn shared_violations(&mut self, kind: usize) -> Arc<Vec<usize>> {
-        let now = match kind {
-            0 => self.layout.violated_constraints(),
-            _ => self.layout.violated_clusters(),
+        let now = match (self.scene.nodes.is_empty(), kind) {
+            (true, _) => &[],
+            (false, 0) => self.layout.violated_constraints(),
+            (false, _) => self.layout.violated_clusters(),
         };
         if self.violated[kind].as_slice() != now {
             self.violated[kind] = Arc::new(now.to_vec());

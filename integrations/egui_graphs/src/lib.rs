@@ -274,6 +274,10 @@ impl Layout<RapierGraphState> for RapierGraphLayout {
         if let Some(synced) = world.synced.as_mut() {
             synced.send(&world.scene, &world.extras, &state.config);
             let (positions, converged) = synced.receive(&mut state.cluster_bounds);
+            // A list changed since reaches the worker's frames a step later: one box per
+            // listed cluster meanwhile (an added one empty, at the origin).
+            let listed = state.clusters.len();
+            state.cluster_bounds.resize(listed, Box2D::zero());
             let mut moved = 0.0_f32;
             for (index, p) in positions {
                 if world.extras.dragging.contains(&index) {

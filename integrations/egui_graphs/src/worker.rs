@@ -38,6 +38,8 @@ impl Synced {
     ) -> Self {
         let worker_extras = LayoutExtras {
             pinned: extras.pinned.clone(),
+            constraints: extras.constraints.clone(),
+            clusters: extras.clusters.clone(),
             ..LayoutExtras::default()
         };
         let worker = LayoutWorker::spawn_with(

@@ -70,6 +70,9 @@ pub(in crate::adapter) struct HeatStage {
     pub(in crate::adapter) rest: Rest,
     /// What this call disturbed, and the spread of its heat (`spread.rs`).
     pub(in crate::adapter) spread: Disturbances,
+    /// Whether this call stepped the world: false from the call's start until
+    /// [`start_frame`](Self::start_frame) lets it step.
+    pub(in crate::adapter) stepped: bool,
 }
 
 /// What the heat makes of one call's simulation.
@@ -107,6 +110,7 @@ impl HeatStage {
         if self.state.halted {
             return false;
         }
+        self.stepped = true;
         if let Some(cooling) = config.cooling {
             if disturbed {
                 match (cooling.reheat_hops, world) {

@@ -299,17 +299,22 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
     /// Notes each listed cluster's box from `world` (an empty box for one left out or
     /// without members in the world), index-aligned with the host's list; and, when the
     /// call `stepped` the world or the list was compiled since, which clusters are more
-    /// than a unit from holding (a call that did neither moved nothing: the last check
-    /// stands).
+    /// than a unit from holding. A call that did neither moved nothing: the last boxes
+    /// and check stand.
     pub(crate) fn note_bounds(
         &mut self,
         world: Option<&RapierSceneWorld<N>>,
         listed: usize,
         stepped: bool,
     ) {
-        self.bounds.clear();
         let unchecked = std::mem::take(&mut self.unchecked);
         let check = stepped || unchecked;
+        if !check && world.is_some() && self.bounds.len() == listed {
+            // Nothing moved and the list is the one compiled: the boxes stand (a layout
+            // at rest reads no body).
+            return;
+        }
+        self.bounds.clear();
         if check {
             self.violated.clear();
         }

@@ -453,20 +453,7 @@ fn label_boxes_stay_inside_their_cluster_and_outside_the_others() {
 /// says which; unpinned, the boxes part and the list empties.
 #[test]
 fn clusters_that_cannot_hold_are_listed_and_the_list_empties_when_they_can() {
-    use common::{edge, node};
-    let scene = CanvasSceneInput::new(
-        vec![
-            node(0_u32, 0.0, 0.0),
-            node(1, 200.0, 0.0),
-            node(2, 100.0, 20.0),
-            node(3, 100.0, 200.0),
-        ],
-        vec![edge(0, 1), edge(2, 3), edge(1, 2)],
-    );
-    let mut host = Host::new(scene, RapierLayoutConfig::stress());
-    host.extras.clusters = vec![Cluster::new(vec![0, 1]), Cluster::new(vec![2, 3])];
-    // 0 and 1 hold cluster 0's box across x 0..200; 2 is held inside it.
-    host.extras.pinned.extend([0, 1, 2]);
+    let mut host = common::clusters_held_overlapping();
     let frames = host.settle(900);
     assert!(
         host.layout.is_converged(&host.state),

@@ -57,26 +57,17 @@ fn a_reordered_constraint_list_at_rest_is_reported_by_its_new_indices() {
 
 #[test]
 fn a_reordered_cluster_list_at_rest_is_reported_by_its_new_indices() {
-    let scene = CanvasSceneInput::new(
-        vec![
-            node(0_u32, 0.0, 0.0),
-            node(1, 200.0, 0.0),
-            node(2, 100.0, 20.0),
-            node(3, 100.0, 200.0),
-            node(4, 600.0, 600.0),
-            node(5, 700.0, 600.0),
-        ],
-        vec![edge(0, 1), edge(2, 3), edge(1, 2), edge(4, 5), edge(3, 4)],
-    );
-    let mut host = Host::new(scene, RapierLayoutConfig::stress());
-    let (a, b, free) = (
-        Cluster::new(vec![0, 1]),
-        Cluster::new(vec![2, 3]),
-        Cluster::new(vec![4, 5]),
-    );
-    host.extras.clusters = vec![a.clone(), b.clone(), free.clone()];
-    // The pins hold 2 inside the box of 0 and 1.
-    host.extras.pinned.extend([0, 1, 2]);
+    // Clusters 0 and 1 held overlapping by pins, and a third far off that holds.
+    let mut host = common::clusters_held_overlapping();
+    host.scene
+        .nodes
+        .extend([node(4, 600.0, 600.0), node(5, 700.0, 600.0)]);
+    host.scene.edges.extend([edge(4, 5), edge(3, 4)]);
+    host.extras.clusters.push(Cluster::new(vec![4, 5]));
+    let (a, b, free) = match &host.extras.clusters[..] {
+        [a, b, free] => (a.clone(), b.clone(), free.clone()),
+        listed => panic!("three clusters, not {listed:?}"),
+    };
     let frames = host.settle(900);
     assert_eq!(
         host.layout.violated_clusters(),

@@ -13,19 +13,11 @@ type Adjacency = Vec<Vec<(usize, f64)>>;
 /// Each node's community (an index from 0, in the order communities are first met in
 /// the scene's node order), by Louvain on `scene`'s edges (weight 1 each; repeats add).
 pub fn louvain(scene: &CanvasSceneInput<u32>) -> Vec<usize> {
-    let index: HashMap<u32, usize> = scene
-        .nodes
-        .iter()
-        .enumerate()
-        .map(|(i, n)| (n.id, i))
-        .collect();
     let mut adjacency: Adjacency = vec![Vec::new(); scene.nodes.len()];
-    for e in &scene.edges {
-        if let (Some(&a), Some(&b)) = (index.get(&e.source), index.get(&e.target)) {
-            adjacency[a].push((b, 1.0));
-            if a != b {
-                adjacency[b].push((a, 1.0));
-            }
+    for (a, b) in super::edge_ends(scene) {
+        adjacency[a].push((b, 1.0));
+        if a != b {
+            adjacency[b].push((a, 1.0));
         }
     }
     // Each original node's community, refined level by level.

@@ -30,6 +30,18 @@ pub fn load(name: &str) -> CanvasSceneInput<u32> {
         .into_scene()
 }
 
+/// Each edge's ends as indices into `scene.nodes` (the first node of an id), in edge
+/// order; an edge naming a node the scene lacks is left out.
+pub fn edge_ends(scene: &CanvasSceneInput<u32>) -> Vec<(usize, usize)> {
+    let mut index = std::collections::HashMap::new();
+    for (i, n) in scene.nodes.iter().enumerate() {
+        index.entry(n.id).or_insert(i);
+    }
+    let at = |id: &u32| index.get(id).copied();
+    let ends = scene.edges.iter().map(|e| at(&e.source).zip(at(&e.target)));
+    ends.flatten().collect()
+}
+
 /// FNV-1a over 64 bits: stable across builds and platforms.
 pub struct Fnv(pub u64);
 

@@ -6,26 +6,17 @@
 //! edges from the others may cross; nodes reached from no root (a directed cycle) get
 //! none.
 
-use std::collections::{HashMap, VecDeque};
+use std::collections::VecDeque;
 
 use graph_canvas_layout::scene::Cluster;
 use graph_canvas_layout::CanvasSceneInput;
 
 /// Clusters of `scene`'s subtrees, `padding` units around each.
 pub fn clusters(scene: &CanvasSceneInput<u32>, padding: f32) -> Vec<Cluster<u32>> {
-    let index: HashMap<u32, usize> = scene
-        .nodes
-        .iter()
-        .enumerate()
-        .map(|(i, n)| (n.id, i))
-        .collect();
     let n = scene.nodes.len();
     let mut parent = vec![usize::MAX; n];
     let mut children: Vec<Vec<usize>> = vec![Vec::new(); n];
-    for e in &scene.edges {
-        let (Some(&s), Some(&t)) = (index.get(&e.source), index.get(&e.target)) else {
-            continue;
-        };
+    for (s, t) in super::common::edge_ends(scene) {
         if s != t && parent[t] == usize::MAX {
             parent[t] = s;
             children[s].push(t);

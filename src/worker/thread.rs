@@ -70,7 +70,8 @@ pub(super) struct Worker<N> {
     /// The cluster boxes last published, shared with the frames until they change.
     bounds: Arc<Vec<Box2D<f32>>>,
     /// The violated constraints and clusters last published, shared likewise.
-    violated: [Arc<Vec<usize>>; 2],
+    violated_constraints: Arc<Vec<usize>>,
+    violated_clusters: Arc<Vec<usize>>,
 }
 
 impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
@@ -99,7 +100,8 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
             steps: 0,
             step_times: Vec::new(),
             bounds: Arc::default(),
-            violated: Default::default(),
+            violated_constraints: Arc::default(),
+            violated_clusters: Arc::default(),
         }
     }
 
@@ -287,45 +289,29 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
         self.nodes_changed = false;
     }
 
-    /// The layout's cluster boxes, a new list only when they changed.
-    fn shared_bounds(&mut self) -> Arc<Vec<Box2D<f32>>> {
-        // With no node, the layout was not stepped: its boxes are the last step's.
-        let now = match self.scene.nodes.is_empty() {
-            true => &[],
-            false => self.layout.cluster_bounds(),
-        };
-        if self.bounds.as_slice() != now {
-            self.bounds = Arc::new(now.to_vec());
-        }
-        Arc::clone(&self.bounds)
-    }
-
-    /// The layout's violated constraints (`kind` 0) or clusters (1), a new list only
-    /// when it changed.
-    fn shared_violations(&mut self, kind: usize) -> Arc<Vec<usize>> {
-        let now = match (self.scene.nodes.is_empty(), kind) {
-            (true, _) => &[],
-            (false, 0) => self.layout.violated_constraints(),
-            (false, _) => self.layout.violated_clusters(),
-        };
-        if self.violated[kind].as_slice() != now {
-            self.violated[kind] = Arc::new(now.to_vec());
-        }
-        Arc::clone(&self.violated[kind])
-    }
-
     /// Hands the newest positions to the host; step times the host has not read yet
     /// carry over.
     fn publish(&mut self) {
         self.reindex();
+        // With no node, the layout was not stepped: its reports are the last step's.
+        let stepped = !self.scene.nodes.is_empty();
+        let layout = &self.layout;
         let mut frame = LayoutFrame {
             ids: Arc::clone(&self.ids),
             index: Arc::clone(&self.index),
             positions: self.scene.nodes.iter().map(|n| n.position).collect(),
             converged: self.at_rest(),
-            cluster_bounds: self.shared_bounds(),
-            violated_constraints: self.shared_violations(0),
-            violated_clusters: self.shared_violations(1),
+            cluster_bounds: share(&mut self.bounds, layout.cluster_bounds(), stepped),
+            violated_constraints: share(
+                &mut self.violated_constraints,
+                layout.violated_constraints(),
+                stepped,
+            ),
+            violated_clusters: share(
+                &mut self.violated_clusters,
+                layout.violated_clusters(),
+                stepped,
+            ),
             applied: self.applied,
             steps: self.steps,
             step_times: std::mem::take(&mut self.step_times),
@@ -342,4 +328,14 @@ impl<N: Clone + Eq + Hash + Send + Sync + 'static> Worker<N> {
         // The unread frame is freed outside the lock.
         drop(unread);
     }
+}
+
+/// `now` (none unless the layout `stepped`), shared through `kept`: a new list only
+/// when it differs from the one kept.
+fn share<T: Clone + PartialEq>(kept: &mut Arc<Vec<T>>, now: &[T], stepped: bool) -> Arc<Vec<T>> {
+    let now = if stepped { now } else { &[] };
+    if kept.as_slice() != now {
+        *kept = Arc::new(now.to_vec());
+    }
+    Arc::clone(kept)
 }

@@ -5,7 +5,7 @@ use std::collections::HashMap;
 use std::hash::Hash;
 
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
-use graph_canvas_layout::scene::SceneFile;
+use graph_canvas_layout::scene::{Cluster, SceneFile};
 use graph_canvas_layout::{
     CanvasEdge, CanvasNode, CanvasSceneInput, CanvasViewport, DeltaMap, Layout, LayoutError,
     LayoutExtras, RapierLayout, RapierLayoutConfig, RapierLayoutState,
@@ -112,6 +112,25 @@ pub fn node<N>(id: N, x: f32, y: f32) -> CanvasNode<N> {
 
 pub fn edge<N>(a: N, b: N) -> CanvasEdge<N> {
     CanvasEdge::new(a, b)
+}
+
+/// Two clusters that cannot both hold, under `stress()`, not yet stepped: nodes 0 and 1
+/// (cluster 0) pinned 200 apart hold its box across x 0..200, and node 2 of cluster 1
+/// (nodes 2 and 3) is pinned inside that box.
+pub fn clusters_held_overlapping() -> Host<u32> {
+    let scene = CanvasSceneInput::new(
+        vec![
+            node(0, 0.0, 0.0),
+            node(1, 200.0, 0.0),
+            node(2, 100.0, 20.0),
+            node(3, 100.0, 200.0),
+        ],
+        vec![edge(0, 1), edge(2, 3), edge(1, 2)],
+    );
+    let mut host = Host::new(scene, RapierLayoutConfig::stress());
+    host.extras.clusters = vec![Cluster::new(vec![0, 1]), Cluster::new(vec![2, 3])];
+    host.extras.pinned.extend([0, 1, 2]);
+    host
 }
 
 pub fn dist(a: Point2D<f32>, b: Point2D<f32>) -> f32 {

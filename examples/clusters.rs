@@ -6,14 +6,17 @@
 //! other nodes inside it, sibling boxes overlapping, each by more than a unit); and
 //! writes `target/clusters/<scene>.svg` with the boxes drawn.
 //!
-//! `cargo run --release --example clusters -- [--repeat K] [--shuffled] [scene ...]`; a
-//! scene is `communities_k{K}_m{M}` (K groups of M nodes, `benches/common/generate.rs`),
-//! clustered by its groups, or a shipped scene (`les_miserables`, `1138_bus`) clustered
-//! by the communities the Louvain method finds (`common/communities.rs`); it defaults to
-//! `communities_k10_m50`, `communities_k100_m100`, `les_miserables` and `1138_bus`.
+//! `cargo run --release --example clusters -- [--repeat K] [--shuffled] [--padding P]
+//! [scene ...]`; a scene is `communities_k{K}_m{M}` (K groups of M nodes,
+//! `benches/common/generate.rs`), clustered by its groups, or a shipped scene
+//! (`les_miserables`, `1138_bus`) clustered by the communities the Louvain method finds
+//! (`common/communities.rs`); it defaults to `communities_k10_m50`,
+//! `communities_k100_m100`, `les_miserables` and `1138_bus`.
 //! `--shuffled` also runs as many clusters of the same sizes drawn regardless of the
 //! communities (node `i` in cluster `7919 i mod K`): clusters that do not follow the
-//! graph.
+//! graph. `--padding P` pads every cluster by `P` units (default 10). Each scene's
+//! communities are written to `target/clusters/<scene>_communities.json` for
+//! `scripts/fcose`.
 
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::quality::{self, ClusterViolations};
@@ -70,10 +73,17 @@ fn main() {
     let mut args = std::env::args().skip(1).peekable();
     let mut repeat = 1;
     let mut shuffled = false;
+    let mut padding = graph_canvas_layout::scene::DEFAULT_CLUSTER_PADDING;
     let mut scenes = Vec::new();
     while let Some(arg) = args.next() {
         match arg.as_str() {
             "--shuffled" => shuffled = true,
+            "--padding" => {
+                padding = args
+                    .next()
+                    .and_then(|v| v.parse().ok())
+                    .expect("--padding P")
+            }
             "--repeat" => {
                 repeat = args
                     .next()
@@ -111,7 +121,10 @@ fn main() {
             for (i, n) in scene.nodes.iter().enumerate() {
                 members[group(i)].push(n.id);
             }
-            members.into_iter().map(Cluster::new).collect::<Vec<_>>()
+            members
+                .into_iter()
+                .map(|m| Cluster::new(m).with_padding(padding))
+                .collect::<Vec<_>>()
         };
         let mut kinds = vec![
             ("`stress()`", Vec::new()),
@@ -121,6 +134,12 @@ fn main() {
             let shuffled = clusters_by(&|i| (7919 * i) % groups);
             kinds.push(("`stress()` + shuffled clusters", shuffled));
         }
+        // The communities, in scene order, for tools outside the crate
+        // (`scripts/fcose`: the same clusters laid out by fCoSE).
+        let listed: Vec<String> = community.iter().map(usize::to_string).collect();
+        let path = format!("{out}/{name}_communities.json");
+        let text = format!("{{\"community\": [{}]}}\n", listed.join(","));
+        std::fs::write(&path, text).unwrap_or_else(|e| panic!("{path}: {e}"));
         let community_of: std::collections::HashMap<u32, usize> = scene
             .nodes
             .iter()
@@ -176,7 +195,7 @@ fn main() {
         edits.push((name.clone(), widened(clustered, &kinds[1].1)));
     }
     println!();
-    println!("A changed cluster: cluster 0's padding widened from 10 to 40 at rest.");
+    println!("A changed cluster: cluster 0's padding widened from {padding} to 40 at rest.");
     println!();
     println!("| scene | nodes moved > 1 unit | in clusters | frames to rest | moved farthest |");
     println!("| --- | ---: | ---: | ---: | ---: |");

@@ -23,6 +23,8 @@ pub(super) struct Built {
     /// Built by [`RapierLayout::at_rest`](crate::RapierLayout::at_rest): the first world
     /// starts cold.
     pub(super) cold_start: bool,
+    /// The next world starts anew, as the first one did (the layers turned off).
+    pub(super) start_again: bool,
 }
 
 impl Default for Built {
@@ -35,6 +37,7 @@ impl Default for Built {
             patches: 0,
             joint_dt: DEFAULT_TIMESTEP,
             cold_start: false,
+            start_again: false,
         }
     }
 }

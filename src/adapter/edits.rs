@@ -70,13 +70,16 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         extras: &LayoutExtras<N>,
         topology: &Topology,
     ) {
+        // The first world, or one that starts anew as the first did.
+        let again = std::mem::take(&mut self.built.start_again);
+        let first = self.built.rebuilds == 0 || again;
         let mut world = RapierSceneWorld::with_options(self.world_options());
         world.set_timestep(self.built.joint_dt);
         world.set_springs_as_forces(self.config.springs.model == SpringModel::Forces);
         // A new world counts its versions from 0 again.
         self.forces.reset();
         // Contacts stay out of the first unfolding until the heat lets them in.
-        world.set_contacts_enabled(!(self.heat.state.unfolding || self.built.rebuilds == 0));
+        world.set_contacts_enabled(!(self.heat.state.unfolding || first));
         insert_missing_nodes(
             &mut world,
             scene,
@@ -88,8 +91,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         // NOTE: before the joints, which rest at the hop length it chooses.
         let origin = WorldOrigin {
             previous_hop: self.world.as_ref().and_then(RapierSceneWorld::hop_length),
-            first: self.built.rebuilds == 0,
-            cold_start: self.built.cold_start,
+            first,
+            cold_start: self.built.cold_start && !again,
         };
         // The start holds the constraints as it descends.
         let mut held = Compiled::default();
@@ -134,7 +137,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.heat.spread.touch_everything();
         self.world = Some(world);
         self.built.applied = Some(self.config.clone());
-        if self.built.rebuilds == 0 {
+        if first {
             // Later builds are disturbances: they reheat.
             self.heat.state.alpha = 1.0;
             self.heat.state.unfolding = true;

@@ -7,9 +7,7 @@ use std::hash::Hash;
 
 use super::heat::Rest;
 use super::RapierLayout;
-#[cfg(doc)]
-use crate::config::RapierLayoutConfig;
-use crate::config::SpringModel;
+use crate::config::{RapierLayoutConfig, SpringModel, StressStart};
 use crate::world::WorldOptions;
 
 impl<N: Clone + Eq + Hash> RapierLayout<N> {
@@ -40,9 +38,13 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 world.set_spring_scale(1.0);
             }
         }
-        if structural {
+        // The layers turned off: a layered picture is no stress layout, and the forces
+        // settling from it tangle (`tests/regression_layers_off_starts_anew.rs`).
+        let start_again = leaves_layers(applied, &self.config);
+        if structural || start_again {
             self.world = None;
             self.built.topology_hash = 0;
+            self.built.start_again |= start_again;
         } else if applied.edge_joint != self.config.edge_joint
             || applied.springs.weight != self.config.springs.weight
             || applied.springs.model != self.config.springs.model
@@ -79,4 +81,14 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             contact_events: self.config.contacts.events,
         }
     }
+}
+
+/// Whether `config` turns off the layers `applied` held, on a stress layout that makes
+/// its own start: the next world starts anew, as the first one did.
+fn leaves_layers(applied: &RapierLayoutConfig, config: &RapierLayoutConfig) -> bool {
+    let layered = |c: &RapierLayoutConfig| c.flow.is_some_and(|f| f.layered());
+    let starts = config
+        .stress
+        .is_some_and(|s| s.start == StressStart::Global);
+    layered(applied) && !layered(config) && starts
 }

@@ -268,6 +268,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
                 patches: snapshot.patches,
                 joint_dt: snapshot.joint_dt,
                 cold_start: snapshot.cold_start,
+                // Set and spent within one call: never pending between calls.
+                start_again: false,
             },
             matching: Matching::resumed(snapshot.stamp),
             host: Host {

@@ -85,6 +85,12 @@ impl Flow {
     /// freely within the flow's separations. `docs/flow.md` has the figures. Default:
     /// off.
     ///
+    /// Turning the layers off between calls (to the free flow or to no flow) starts a
+    /// [`stress()`](crate::RapierLayoutConfig::stress) layout anew, as its first call
+    /// did: the next call places every node where a new layout starts (shifted onto the
+    /// pinned and dragged nodes) and returns the move in its deltas. Settled from the
+    /// layers, which are no stress layout, the nodes rested tangled.
+    ///
     /// # Example
     /// ```
     /// use graph_canvas_layout::config::Flow;

@@ -14,14 +14,16 @@
 //! `communities_k100_m100`, `les_miserables` and `1138_bus`.
 //! `--shuffled` also runs as many clusters of the same sizes drawn regardless of the
 //! communities (node `i` in cluster `7919 i mod K`): clusters that do not follow the
-//! graph. `--padding P` pads every cluster by `P` units (default 10). Each scene's
+//! graph. `--padding P` pads every cluster by `P` units (default 10). `--motion` lays
+//! each clustered graph out again, checking the clusters after every frame on the way to
+//! rest, and measures what the frame that stopped the layout moved. Each scene's
 //! communities are written to `target/clusters/<scene>_communities.json` for
 //! `scripts/fcose`.
 
 use graph_canvas_layout::euclid::default::Point2D;
 use graph_canvas_layout::quality::{self, ClusterViolations};
 use graph_canvas_layout::scene::Cluster;
-use graph_canvas_layout::{CanvasSceneInput, RapierLayoutConfig};
+use graph_canvas_layout::{CanvasSceneInput, Layout, RapierLayoutConfig};
 
 #[path = "common/mod.rs"]
 mod common;
@@ -59,6 +61,46 @@ fn run(scene: &CanvasSceneInput<u32>, clusters: &[Cluster<u32>]) -> Run {
     }
 }
 
+/// How the clusters hold while a layout moves to rest.
+struct Motion {
+    /// Frames before the cold stop, and those ending with a violation deeper than a unit.
+    frames: usize,
+    violated: usize,
+    /// The deepest violation any of them ended with.
+    worst: f32,
+    /// The frame that stopped the layout: nodes it moved more than a unit, the farthest.
+    stopped: usize,
+    farthest: f32,
+}
+
+/// Lays `scene` out with `clusters` from the start and checks every frame.
+fn motion(scene: &CanvasSceneInput<u32>, clusters: &[Cluster<u32>]) -> Motion {
+    let mut host = Host::new(scene.clone(), RapierLayoutConfig::stress());
+    host.extras.clusters = clusters.to_vec();
+    let mut m = Motion {
+        frames: 0,
+        violated: 0,
+        worst: 0.0,
+        stopped: 0,
+        farthest: 0.0,
+    };
+    for _ in 0..2_000 {
+        let deltas = host.frame(FRAME);
+        if host.layout.is_converged(&host.state) {
+            let moves = deltas.values().map(|d| d.length());
+            m.stopped = moves.clone().filter(|&d| d > 1.0).count();
+            m.farthest = moves.fold(0.0, f32::max);
+            break;
+        }
+        m.frames += 1;
+        let bounds = host.layout.cluster_bounds();
+        let v = quality::cluster_violations(&host.scene, clusters, bounds, 16.0, 1.0);
+        m.violated += usize::from(v.worst > 1.0);
+        m.worst = m.worst.max(v.worst);
+    }
+    m
+}
+
 /// The community size a `communities_k{K}_m{M}` name gives.
 fn group_size(name: &str) -> Option<usize> {
     name.rsplit('_').next()?.strip_prefix('m')?.parse().ok()
@@ -73,11 +115,13 @@ fn main() {
     let mut args = std::env::args().skip(1).peekable();
     let mut repeat = 1;
     let mut shuffled = false;
+    let mut moving = false;
     let mut padding = graph_canvas_layout::scene::DEFAULT_CLUSTER_PADDING;
     let mut scenes = Vec::new();
     while let Some(arg) = args.next() {
         match arg.as_str() {
             "--shuffled" => shuffled = true,
+            "--motion" => moving = true,
             "--padding" => {
                 padding = args
                     .next()
@@ -104,6 +148,7 @@ fn main() {
         .to_vec();
     }
     let mut edits = Vec::new();
+    let mut motions = Vec::new();
     let out = format!("{}/target/clusters", env!("CARGO_MANIFEST_DIR"));
     std::fs::create_dir_all(&out).expect("target/clusters");
     println!("| scene | layout | frames | ms to rest | step p95 ms | µs a call at rest | stress | overlaps | members outside | intruders | overlapping boxes | worst |");
@@ -193,6 +238,9 @@ fn main() {
         }
         let clustered = &mut runs[1][0].host;
         edits.push((name.clone(), widened(clustered, &kinds[1].1)));
+        if moving {
+            motions.push((name.clone(), motion(&scene, &kinds[1].1)));
+        }
     }
     println!();
     println!("A changed cluster: cluster 0's padding widened from {padding} to 40 at rest.");
@@ -204,6 +252,21 @@ fn main() {
             "| {name} | {} of {} | {} of {} | {} | {:.1} |",
             e.moved, e.nodes, e.clusters_moved, e.clusters, e.frames, e.farthest
         );
+    }
+    if !motions.is_empty() {
+        println!();
+        println!("While the layout moves to rest: frames ending with a violation deeper than a unit, the deepest, and what the frame that stopped it moved.");
+        println!();
+        println!(
+            "| scene | frames violated | deepest | nodes the stop moved > 1 unit | farthest |"
+        );
+        println!("| --- | ---: | ---: | ---: | ---: |");
+        for (name, m) in motions {
+            println!(
+                "| {name} | {} of {} | {:.1} | {} | {:.1} |",
+                m.violated, m.frames, m.worst, m.stopped, m.farthest
+            );
+        }
     }
 }
 

@@ -95,6 +95,12 @@ pub(super) struct Level {
     seen: Vec<u32>,
 }
 
+/// The most sibling boxes that meet at walls while the layout moves; more move whole.
+/// Among 100 clusters of 100 the walls held the boxes, but the clusters' edges pressed
+/// them against the walls until their disks piled up (32,441 pairs overlapping at frame
+/// 60, 484 left at rest); 60 clusters of 50 rested with none.
+const WALLS_UP_TO: usize = 64;
+
 /// The most cells along a side of the grid.
 const MOST_CELLS: usize = 256;
 
@@ -108,10 +114,21 @@ impl Level {
         ctx: &mut Ctx<'_>,
     ) -> f32 {
         let mut moved = 0.0_f32;
-        // Box against box, by turns in list order.
+        // Box against box, by turns in list order: while the layout moves, at a wall
+        // between them (`walls.rs`); at the start and the cold stop, for a check, and
+        // among more than `WALLS_UP_TO` siblings, whole.
+        let walled = ctx.walls && clusters.len() <= WALLS_UP_TO;
         for (k, &a) in clusters.iter().enumerate() {
             for &b in &clusters[k + 1..] {
-                moved = moved.max(ctx.part(Item::Cluster(a), Item::Cluster(b)));
+                let (a, b) = (Item::Cluster(a), Item::Cluster(b));
+                // A box a pinned or dragged node holds, or one such a box pushed, moves
+                // those in its way whole, a chain of them at once.
+                let by = if walled && !ctx.held(a) && !ctx.held(b) {
+                    super::walls::wall(ctx, a, b)
+                } else {
+                    ctx.part(a, b)
+                };
+                moved = moved.max(by);
             }
         }
         self.index(clusters, ctx.boxes);
@@ -202,6 +219,9 @@ pub(super) struct Ctx<'a> {
     /// took most of a 10,000-node frame; a step at a time, they part over a few frames
     /// and the cold stop parts the rest whole.
     pub(super) most: f32,
+    /// Whether sibling boxes meet at walls (`walls.rs`) rather than move whole: in the
+    /// physics and at the cold stop; a start layout's boxes move whole.
+    pub(super) walls: bool,
     /// A check instead of a parting: by cluster, set when its box overlaps an item of
     /// its level by more than [`UNHELD`]; nothing moves.
     pub(super) unheld: Option<&'a mut [bool]>,
@@ -212,18 +232,43 @@ pub(super) struct Ctx<'a> {
 pub(super) const UNHELD: f32 = 1.0;
 
 impl Ctx<'_> {
-    fn bounds(&self, item: Item) -> Bounds {
+    /// The box of `item` as it stands.
+    pub(super) fn bounds(&self, item: Item) -> Bounds {
         match item {
             Item::Cluster(c) => self.boxes.bounds[c as usize],
             Item::Body(s) => self.bodies.outline(s as usize),
         }
     }
 
-    fn give(&self, item: Item, axis: usize) -> f32 {
+    /// How much `item` gives way along `axis` (0: not at all).
+    pub(super) fn give(&self, item: Item, axis: usize) -> f32 {
         match item {
             Item::Cluster(c) => self.boxes.give(c as usize, axis),
             Item::Body(s) => f32::from(u8::from(self.bodies.free[s as usize][axis])),
         }
+    }
+
+    /// Whether `item` does not give way along an axis, or something that does not
+    /// pushed it this call.
+    pub(super) fn held(&self, item: Item) -> bool {
+        self.moves.is_driven(item) || self.give(item, 0) == 0.0 || self.give(item, 1) == 0.0
+    }
+
+    /// How `a` and `b`, overlapping by `o`, part: along the axis they overlap least,
+    /// unless neither gives way along it (an axis lock), then the other; and `b` the way
+    /// its centre lies from `a`'s along it (1 forward, -1 back; ties: forward). `None`
+    /// when neither gives way along either axis.
+    pub(super) fn parting(&self, a: Item, b: Item, o: [f32; 2]) -> Option<(usize, f32)> {
+        let gives = |k: usize| self.give(a, k) + self.give(b, k) > 0.0;
+        let axis = match (gives(0), gives(1)) {
+            (true, true) => usize::from(o[1] < o[0]),
+            (true, false) => 0,
+            (false, true) => 1,
+            (false, false) => return None,
+        };
+        let centre = |x: Bounds| x[0][axis] + x[1][axis];
+        let forward = centre(self.bounds(b)) >= centre(self.bounds(a));
+        Some((axis, if forward { 1.0 } else { -1.0 }))
     }
 
     /// Parts `a` and `b` if they overlap; returns how far either moved.
@@ -243,18 +288,11 @@ impl Ctx<'_> {
             }
             return 0.0;
         }
-        let gives = |k: usize| self.give(a, k) + self.give(b, k) > 0.0;
-        // The axis they overlap least, unless neither item gives way along it (an axis
-        // lock): then the other.
-        let axis = match (gives(0), gives(1)) {
-            (true, true) => usize::from(o[1] < o[0]),
-            (true, false) => 0,
-            (false, true) => 1,
-            (false, false) => return 0.0,
+        let Some((axis, sign)) = self.parting(a, b, o) else {
+            return 0.0;
         };
-        // `b` goes the way its centre lies from `a`'s (ties: b forward), by the overlap.
-        let centre = |x: Bounds| x[0][axis] + x[1][axis];
-        let (way, sign) = (o[axis], if centre(bb) >= centre(ba) { 1.0 } else { -1.0 });
+        // `b` goes the way its centre lies from `a`'s, by the overlap.
+        let way = o[axis];
         let (mut ga, mut gb) = (self.give(a, axis), self.give(b, axis));
         // An item a fixed one pushed this call passes the push on whole, as if fixed:
         // a dragged box moves a chain of boxes ahead of it. Only two free items that
@@ -280,7 +318,7 @@ impl Ctx<'_> {
 
     /// Moves `item` by `by` along `axis`: a body at once, a box now and what is in it
     /// when the level is done ([`Ctx::carry`]: its members are no items of the level).
-    fn shift(&mut self, item: Item, axis: usize, by: f32) {
+    pub(super) fn shift(&mut self, item: Item, axis: usize, by: f32) {
         if by == 0.0 || !by.is_finite() {
             return;
         }
@@ -298,6 +336,11 @@ impl Ctx<'_> {
                 b[1][axis] += by;
             }
         }
+    }
+
+    /// Moves body `s` by `by` along the axes of `parted`, now.
+    pub(super) fn push_body(&mut self, s: usize, by: [f32; 2], parted: [bool; 2]) {
+        self.moves.body(self.bodies, s, by, parted);
     }
 
     /// Moves what is in each of `clusters` by what its box moved, and stops it along

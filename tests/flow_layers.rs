@@ -5,7 +5,7 @@
 mod common;
 
 use common::{edge, node, Host};
-use graph_canvas_layout::config::Flow;
+use graph_canvas_layout::config::{Flow, StressStart};
 use graph_canvas_layout::euclid::default::{Point2D, Vector2D};
 use graph_canvas_layout::quality::edge_crossings;
 use graph_canvas_layout::{CanvasSceneInput, RapierLayoutConfig};
@@ -132,6 +132,40 @@ fn nodes_without_an_edge_get_a_layer_and_no_two_nodes_overlap() {
     for p in host.scene.nodes.iter().map(|n| n.position) {
         assert!(p.x.is_finite() && p.y.is_finite(), "{p:?}");
     }
+}
+
+#[test]
+fn turning_the_layers_off_lifts_the_rows_where_the_layout_does_not_start_anew() {
+    // A layout that starts from the host's positions settles on from the layers when
+    // they are turned off: three nodes without an edge share layer 0, and with the flow
+    // turned off, dragging one down leaves the others where they are.
+    let mut config = layered();
+    if let Some(stress) = config.stress.as_mut() {
+        stress.start = StressStart::HostPositions;
+    }
+    let nodes = (0..3).map(|i| node(i, i as f32 * 100.0, 0.0)).collect();
+    let mut host = Host::new(CanvasSceneInput::new(nodes, Vec::new()), config);
+    host.settle(900);
+    host.layout.config = RapierLayoutConfig {
+        flow: None,
+        ..host.layout.config.clone()
+    };
+    host.frame(1.0 / 60.0);
+    let (start, other) = (host.pos(&0), host.pos(&2));
+    assert!(
+        (start.y - other.y).abs() < 1.0 && (start.x - other.x).abs() > 100.0,
+        "nodes 0 and 2 at {start:?} and {other:?}: not side by side in one layer"
+    );
+    host.extras.dragging = [0_u32].into_iter().collect();
+    for frame in 1..=20 {
+        host.set_pos(&0, start + Vector2D::new(0.0, 10.0 * frame as f32));
+        host.frame(1.0 / 60.0);
+    }
+    let followed = host.pos(&2).y - other.y;
+    assert!(
+        followed.abs() < 50.0,
+        "node 2 followed the dragged node {followed} units down: a layer outlived its flow"
+    );
 }
 
 #[test]

@@ -46,7 +46,7 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             return false;
         }
         let rebuild = self.config.topology_update == TopologyUpdate::Rebuild && !same_edges;
-        if self.world.is_none() || rebuild {
+        if self.world.is_none() || rebuild || self.built.start_again {
             self.build_world(scene, extras, &topology);
         } else {
             // Also a weight edit alone: its joints are re-tuned in place.

@@ -516,7 +516,8 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
         self.heat.spread.clear();
         // 2. Reconfigure.
         let reconfigured = self.apply_config_changes();
-        let unfolding_before = self.heat.state.unfolding;
+        // A layout that starts anew unfolds as a new one does.
+        let unfolding_before = self.heat.state.unfolding && !self.built.start_again;
         let cold = self.builds_cold();
         // 3. Match and edit. A caller's list stands for the matching only while nothing
         // was reconfigured.

@@ -39,10 +39,13 @@ impl<N: Clone + Eq + Hash> RapierLayout<N> {
             }
         }
         // The layers turned off: a layered picture is no stress layout, and the forces
-        // settling from it tangle (`tests/regression_layers_off_starts_anew.rs`).
+        // settling from it tangle (`tests/regression_layers_off_starts_anew.rs`). The
+        // old world stays until the new one is built from it (drags, unusable nodes).
         let start_again = leaves_layers(applied, &self.config);
         if structural || start_again {
-            self.world = None;
+            if structural {
+                self.world = None;
+            }
             self.built.topology_hash = 0;
             self.built.start_again |= start_again;
         } else if applied.edge_joint != self.config.edge_joint

@@ -5,8 +5,10 @@
 //! its own members; then the top level, where the boxes meet the nodes in no cluster.
 //! The host's list is compiled by world slot (`tree.rs`) when it or the world changes.
 //!
-//! A parting moves positions and stops the parted bodies' speed along its axis; the
-//! boxes move whole, so a cluster keeps its inside as it is.
+//! A parting moves positions and stops the parted bodies' speed along its axis. At the
+//! start and the cold stop the boxes move whole, so a cluster keeps its inside as it
+//! is; while the layout moves, two sibling boxes meet at a wall that holds back the
+//! members reaching past it (`walls.rs`).
 
 mod boxes;
 mod part;

@@ -2,7 +2,8 @@
 //! which are its nested clusters' boxes and its own members' outlines. Two items that
 //! overlap, one of them a box, move apart along the axis they overlap least, in inverse
 //! proportion to the bodies each moves; a box moves whole, with everything in it. An
-//! item that does not give way leaves the whole move to the other. Two members' outlines
+//! item that does not give way leaves the whole move to the other. While the layout
+//! moves, two sibling boxes meet at a wall instead (`walls.rs`). Two members' outlines
 //! are the contacts' business, not this.
 
 use super::boxes::{overlap, union, Bodies, Bounds, Boxes, EMPTY};
@@ -70,7 +71,7 @@ impl Moves {
     }
 
     /// Moves body `s` by `by`, noting that it was parted along the axes of `parted`.
-    fn body(&mut self, bodies: &mut Bodies, s: usize, by: [f32; 2], parted: [bool; 2]) {
+    pub(super) fn body(&mut self, bodies: &mut Bodies, s: usize, by: [f32; 2], parted: [bool; 2]) {
         if self.pushed[s] == [false; 2] {
             self.list.push(s as u32);
         }
@@ -220,7 +221,7 @@ pub(super) struct Ctx<'a> {
     /// and the cold stop parts the rest whole.
     pub(super) most: f32,
     /// Whether sibling boxes meet at walls (`walls.rs`) rather than move whole: in the
-    /// physics and at the cold stop; a start layout's boxes move whole.
+    /// physics; at the start and the cold stop they move whole.
     pub(super) walls: bool,
     /// A check instead of a parting: by cluster, set when its box overlaps an item of
     /// its level by more than [`UNHELD`]; nothing moves.
@@ -336,11 +337,6 @@ impl Ctx<'_> {
                 b[1][axis] += by;
             }
         }
-    }
-
-    /// Moves body `s` by `by` along the axes of `parted`, now.
-    pub(super) fn push_body(&mut self, s: usize, by: [f32; 2], parted: [bool; 2]) {
-        self.moves.body(self.bodies, s, by, parted);
     }
 
     /// Moves what is in each of `clusters` by what its box moved, and stops it along

@@ -86,10 +86,12 @@ impl Flow {
     /// off.
     ///
     /// Turning the layers off between calls (to the free flow or to no flow) starts a
-    /// [`stress()`](crate::RapierLayoutConfig::stress) layout anew, as its first call
-    /// did: the next call places every node where a new layout starts (shifted onto the
-    /// pinned and dragged nodes) and returns the move in its deltas. Settled from the
-    /// layers, which are no stress layout, the nodes rested tangled.
+    /// [`stress()`](crate::RapierLayoutConfig::stress) layout that makes its own start
+    /// ([`StressStart::Global`](crate::config::StressStart::Global), one restored
+    /// [`at_rest`](crate::RapierLayout::at_rest) too) anew: the next call places every
+    /// node where a new layout under the new flow starts, placed onto the pinned and
+    /// dragged nodes, and returns the move in its deltas. Settled from the layers,
+    /// which are no stress layout, the nodes rested tangled.
     ///
     /// # Example
     /// ```

@@ -168,7 +168,7 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
         }
         self.read(world, locks);
         let most = step.map_or(f32::INFINITY, |share| share * self.bodies.mean_half());
-        let moved = self.part_rounds(rounds, most, most.is_finite());
+        let moved = self.part_rounds(rounds, most);
         self.write(world);
         moved
     }
@@ -176,13 +176,13 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
     /// Parts every level of the bodies as read, `rounds` times or until a round moves
     /// nothing, free items that nothing drives at most `most` apart each time. Returns
     /// how far the last round moved anything.
-    fn part_rounds(&mut self, rounds: usize, most: f32, walls: bool) -> f32 {
+    fn part_rounds(&mut self, rounds: usize, most: f32) -> f32 {
         self.moves
             .clear(self.bodies.points.len(), self.tree.held.len());
         let mut moved = 0.0;
         for _ in 0..rounds {
             self.boxes.make(&self.tree, &self.bodies);
-            moved = self.visit_levels(most, walls, false);
+            moved = self.visit_levels(most, false);
             if moved == 0.0 {
                 break;
             }
@@ -213,7 +213,7 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
             self.bodies.points[s] = [p[0] * unit, p[1] * unit];
         }
         self.bodies.free.iter_mut().for_each(|f| *f = [true; 2]);
-        self.part_rounds(rounds, f32::INFINITY, false);
+        self.part_rounds(rounds, f32::INFINITY);
         for &s in &self.moves.list {
             let [x, y] = self.bodies.points[s as usize];
             points[s as usize] = [x / unit, y / unit];
@@ -222,14 +222,13 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
 
     /// Each level from the inside out: parted, or with `check`, checked (nothing moves;
     /// [`Clusters::unheld`] marks the boxes overlapping an item of their level).
-    fn visit_levels(&mut self, most: f32, walls: bool, check: bool) -> f32 {
+    fn visit_levels(&mut self, most: f32, check: bool) -> f32 {
         let mut ctx = Ctx {
             tree: &self.tree,
             bodies: &mut self.bodies,
             boxes: &mut self.boxes,
             moves: &mut self.moves,
             most,
-            walls: walls && !check,
             unheld: check.then_some(&mut self.unheld[..]),
         };
         let mut moved = 0.0_f32;
@@ -250,7 +249,7 @@ impl<N: Clone + Eq + Hash> Clusters<N> {
         self.unheld.resize(self.tree.held.len(), false);
         self.moves
             .clear(self.bodies.points.len(), self.tree.held.len());
-        self.visit_levels(0.0, false, true);
+        self.visit_levels(0.0, true);
         let unheld = self.unheld.iter().enumerate().filter(|&(_, &u)| u);
         self.violated.extend(unheld.map(|(c, _)| c));
     }

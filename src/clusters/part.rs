@@ -118,7 +118,7 @@ impl Level {
         // Box against box, by turns in list order: while the layout moves, at a wall
         // between them (`walls.rs`); at the start and the cold stop, for a check, and
         // among more than `WALLS_UP_TO` siblings, whole.
-        let walled = ctx.walls && clusters.len() <= WALLS_UP_TO;
+        let walled = ctx.walls() && clusters.len() <= WALLS_UP_TO;
         for (k, &a) in clusters.iter().enumerate() {
             for &b in &clusters[k + 1..] {
                 let (a, b) = (Item::Cluster(a), Item::Cluster(b));
@@ -220,9 +220,6 @@ pub(super) struct Ctx<'a> {
     /// took most of a 10,000-node frame; a step at a time, they part over a few frames
     /// and the cold stop parts the rest whole.
     pub(super) most: f32,
-    /// Whether sibling boxes meet at walls (`walls.rs`) rather than move whole: in the
-    /// physics; at the start and the cold stop they move whole.
-    pub(super) walls: bool,
     /// A check instead of a parting: by cluster, set when its box overlaps an item of
     /// its level by more than [`UNHELD`]; nothing moves.
     pub(super) unheld: Option<&'a mut [bool]>,
@@ -247,6 +244,13 @@ impl Ctx<'_> {
             Item::Cluster(c) => self.boxes.give(c as usize, axis),
             Item::Body(s) => f32::from(u8::from(self.bodies.free[s as usize][axis])),
         }
+    }
+
+    /// Whether sibling boxes meet at walls (`walls.rs`) rather than move whole: while
+    /// the layout moves, where a parting goes a step at a time; at the start and the
+    /// cold stop (whole partings) and in a check they do not.
+    pub(super) fn walls(&self) -> bool {
+        self.most.is_finite() && self.unheld.is_none()
     }
 
     /// Whether `item` does not give way along an axis, or something that does not

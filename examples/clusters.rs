@@ -45,9 +45,15 @@ struct Run {
     rest_us: f64,
 }
 
-fn run(scene: &CanvasSceneInput<u32>, clusters: &[Cluster<u32>]) -> Run {
+/// A `stress()` layout of `scene` with `clusters`, not yet stepped.
+fn clustered(scene: &CanvasSceneInput<u32>, clusters: &[Cluster<u32>]) -> Host {
     let mut host = Host::new(scene.clone(), RapierLayoutConfig::stress());
     host.extras.clusters = clusters.to_vec();
+    host
+}
+
+fn run(scene: &CanvasSceneInput<u32>, clusters: &[Cluster<u32>]) -> Run {
+    let mut host = clustered(scene, clusters);
     let timed = host.settle_timed(FRAME, 2_000, |_| {});
     let started = std::time::Instant::now();
     for _ in 0..REST_CALLS {
@@ -62,6 +68,7 @@ fn run(scene: &CanvasSceneInput<u32>, clusters: &[Cluster<u32>]) -> Run {
 }
 
 /// How the clusters hold while a layout moves to rest.
+#[derive(Default)]
 struct Motion {
     /// Frames before the cold stop, and those ending with a violation deeper than a unit.
     frames: usize,
@@ -75,15 +82,8 @@ struct Motion {
 
 /// Lays `scene` out with `clusters` from the start and checks every frame.
 fn motion(scene: &CanvasSceneInput<u32>, clusters: &[Cluster<u32>]) -> Motion {
-    let mut host = Host::new(scene.clone(), RapierLayoutConfig::stress());
-    host.extras.clusters = clusters.to_vec();
-    let mut m = Motion {
-        frames: 0,
-        violated: 0,
-        worst: 0.0,
-        stopped: 0,
-        farthest: 0.0,
-    };
+    let mut host = clustered(scene, clusters);
+    let mut m = Motion::default();
     for _ in 0..2_000 {
         let deltas = host.frame(FRAME);
         if host.layout.is_converged(&host.state) {
